@@ -1,0 +1,137 @@
+#include "common/app.hpp"
+
+#include "common/render.hpp"
+#include "common/version.hpp"
+
+#include <CLI/CLI.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cstdio>
+#include <iostream>
+#include <unistd.h>
+
+namespace rt {
+
+namespace {
+
+using nlohmann::json;
+
+json to_json(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
+
+json pick_json(const SceneEntry& entry, int x, int y, const Pick& p) {
+    json j{{"scene", entry.name},
+           {"pixel", {x, y}},
+           {"ray", {{"origin", to_json(p.ray.origin)}, {"direction", to_json(p.ray.direction)}}},
+           {"hit", p.hit.has_value()}};
+    if (p.hit) {
+        const HitRecord& h = *p.hit;
+        j["surface"] = h.surface ? h.surface->name() : "";
+        j["t"] = h.t;
+        j["point"] = to_json(h.p);
+        j["normal"] = to_json(h.normal);
+        if (h.has_barycentrics) {
+            j["beta"] = h.beta;
+            j["gamma"] = h.gamma;
+        }
+    }
+    return j;
+}
+
+json stats_json(const std::string& chapter, const SceneEntry& entry, const RenderOptions& o,
+                const RenderResult& r) {
+    const double mrays = r.seconds > 0 ? double(r.counters.total()) / r.seconds / 1e6 : 0.0;
+    return json{{"chapter", chapter},
+                {"scene", entry.name},
+                {"width", o.width},
+                {"height", o.height},
+                {"spp", o.spp},
+                {"threads", r.threads},
+                {"real", real_name()},
+                {"rays", {{"camera", r.counters.camera}, {"total", r.counters.total()}}},
+                {"seconds", r.seconds},
+                {"mrays_per_s", mrays}};
+}
+
+bool valid_output(const std::string& path) {
+    auto ends = [&](const char* s) {
+        const std::string suffix(s);
+        return path.size() > suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
+    };
+    return ends(".png") || ends(".pfm");
+}
+
+}  // namespace
+
+int ChapterApp::run(int argc, char** argv) const {
+    CLI::App cli{id_ + ": " + title_, id_};
+    RenderOptions o;
+    std::string scene_name = scenes_.empty() ? "" : scenes_.front().name;
+    std::string output;
+    std::vector<int> pick_xy;
+    bool list = false, stats = false;
+
+    cli.add_option("--width", o.width, "image width in pixels")->check(CLI::Range(1, 16384));
+    cli.add_option("--height", o.height, "image height in pixels")->check(CLI::Range(1, 16384));
+    cli.add_option("--spp", o.spp, "samples per pixel")->check(CLI::Range(1, 65536));
+    cli.add_option("--seed", o.seed, "random seed (images are identical for equal seeds)");
+    cli.add_option("--threads", o.threads, "worker threads, 0 = all cores")->check(CLI::Range(0, 1024));
+    cli.add_option("-o,--output", output, "output image, .png (sRGB) or .pfm (linear float)");
+    cli.add_option("--scene", scene_name, "scene to render (see --list-scenes)");
+    cli.add_flag("--list-scenes", list, "print the scene names, one a line, and exit");
+    cli.add_option("--pick", pick_xy, "print what pixel X,Y (from the top left) sees, as JSON, and exit")
+        ->delimiter(',')
+        ->expected(2);
+    cli.add_flag("--stats", stats, "print render statistics as one JSON line");
+    cli.set_version_flag("--version", std::string(id_ + " (rtlab " + kVersion + ", Real=" + real_name() + ")"));
+
+    try {
+        cli.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return cli.exit(e);
+    } catch (const CLI::CallForVersion& e) {
+        return cli.exit(e);
+    } catch (const CLI::ParseError& e) {
+        std::fprintf(stderr, "%s: error: %s\n", id_.c_str(), e.what());
+        return 2;
+    }
+
+    if (list) {
+        for (const SceneEntry& s : scenes_) std::printf("%s\n", s.name.c_str());
+        return 0;
+    }
+    const SceneEntry* entry = nullptr;
+    for (const SceneEntry& s : scenes_)
+        if (s.name == scene_name) entry = &s;
+    if (!entry) {
+        std::fprintf(stderr, "%s: error: --scene: unknown scene '%s' (see --list-scenes)\n", id_.c_str(),
+                     scene_name.c_str());
+        return 2;
+    }
+    if (output.empty()) output = "out/" + id_ + "/" + entry->name + ".png";
+    if (!valid_output(output)) {
+        std::fprintf(stderr, "%s: error: --output: '%s' must end in .png or .pfm\n", id_.c_str(), output.c_str());
+        return 2;
+    }
+
+    try {
+        const Scene scene = entry->build();
+        if (!pick_xy.empty()) {
+            const Pick p = pick(scene, o, pick_xy[0], pick_xy[1]);
+            std::printf("%s\n", pick_json(*entry, pick_xy[0], pick_xy[1], p).dump().c_str());
+            return 0;
+        }
+        o.progress = ::isatty(STDERR_FILENO) != 0;
+        const RenderResult r = render(scene, o);
+        write_image(r.image, output);
+        if (stats) std::printf("%s\n", stats_json(id_, *entry, o, r).dump().c_str());
+    } catch (const std::invalid_argument& e) {
+        std::fprintf(stderr, "%s: error: %s\n", id_.c_str(), e.what());
+        return 2;
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s: error: %s\n", id_.c_str(), e.what());
+        return 1;
+    }
+    return 0;
+}
+
+}  // namespace rt

@@ -1,0 +1,39 @@
+// STUDENT COPY of solutions/ch01_viewing_rays.cpp, made by tools/gen_exercises.cpp.
+// Write your code between each "@exercise" line and its "@end", in place of the throw.
+// Chapter 01 exercises: viewing rays (§9.2). Declared in common/camera.hpp.
+#include "common/camera.hpp"
+#include "common/exercise.hpp"
+
+namespace rt {
+
+// @book basis
+Basis camera_basis(const Vec3& view_direction, const Vec3& up) {
+    // @exercise 1.1 | camera_basis | book §1.2
+    throw NotImplemented("exercise 1.1 (camera_basis) is not done yet: see book §1.2");
+    // @end
+}
+// @book-end
+
+// @book window
+Vec2 window_point(Real x, Real y, int nx, int ny, const Window& win) {
+    // @exercise 1.2 | window_point | book §1.3
+    throw NotImplemented("exercise 1.2 (window_point) is not done yet: see book §1.3");
+    // @end
+}
+// @book-end
+
+// @book rays
+Ray orthographic_ray(const Vec3& eye, const Basis& uvw, const Vec2& uv) {
+    // @exercise 1.3 | orthographic_ray | book §1.4
+    throw NotImplemented("exercise 1.3 (orthographic_ray) is not done yet: see book §1.4");
+    // @end
+}
+
+Ray perspective_ray(const Vec3& eye, const Basis& uvw, Real d, const Vec2& uv) {
+    // @exercise 1.4 | perspective_ray | book §1.4
+    throw NotImplemented("exercise 1.4 (perspective_ray) is not done yet: see book §1.4");
+    // @end
+}
+// @book-end
+
+}  // namespace rt

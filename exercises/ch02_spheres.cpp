@@ -1,0 +1,36 @@
+// STUDENT COPY of solutions/ch02_spheres.cpp, made by tools/gen_exercises.cpp.
+// Write your code between each "@exercise" line and its "@end", in place of the throw.
+// Chapter 02 exercises: ray-sphere intersection (§9.3.1). Declared in common/sphere.hpp.
+#include "common/exercise.hpp"
+#include "common/sphere.hpp"
+
+#include <cmath>
+
+namespace rt {
+
+// @book textbook
+bool sphere_roots_textbook(const Ray& ray, const Vec3& center, Real radius, Real& t_near,
+                           Real& t_far) {
+    // @exercise 2.1 | sphere_roots_textbook | book §2.2
+    throw NotImplemented("exercise 2.1 (sphere_roots_textbook) is not done yet: see book §2.2");
+    // @end
+}
+// @book-end
+
+// @book stable
+bool sphere_roots(const Ray& ray, const Vec3& center, Real radius, Real& t_near, Real& t_far) {
+    // @exercise 2.2 | sphere_roots | book §2.3
+    throw NotImplemented("exercise 2.2 (sphere_roots) is not done yet: see book §2.3");
+    // @end
+}
+// @book-end
+
+// @book hit
+bool Sphere::hit(const Ray& ray, Real t0, Real t1, HitRecord& rec) const {
+    // @exercise 2.3 | Sphere::hit | book §2.4
+    throw NotImplemented("exercise 2.3 (Sphere::hit) is not done yet: see book §2.4");
+    // @end
+}
+// @book-end
+
+}  // namespace rt

@@ -1,0 +1,149 @@
+// Chapter 01: viewing rays (§9.2).
+#include "common/camera.hpp"
+#include "support.hpp"
+
+#include <pcg_random.hpp>
+
+#include <random>
+
+using namespace rt;
+using rt::test::kEps;
+
+TEST_SUITE("ch01") {
+
+TEST_CASE("1.1 camera_basis is orthonormal, right-handed, and looks down -w") {
+    const Vec3 dir(1, -2, -3);  // deliberately not unit length
+    const Basis b = camera_basis(dir, Vec3(0, 1, 0));
+    CHECK(glm::length(b.u) == doctest::Approx(1).epsilon(4 * kEps));
+    CHECK(glm::length(b.v) == doctest::Approx(1).epsilon(4 * kEps));
+    CHECK(glm::length(b.w) == doctest::Approx(1).epsilon(4 * kEps));
+    CHECK(std::abs(glm::dot(b.u, b.v)) < 8 * kEps);
+    CHECK(std::abs(glm::dot(b.v, b.w)) < 8 * kEps);
+    CHECK(std::abs(glm::dot(b.u, b.w)) < 8 * kEps);
+    const Vec3 uxv = glm::cross(b.u, b.v);  // right-handed: u x v = w
+    CHECK(glm::length(uxv - b.w) < 8 * kEps);
+    const Vec3 back = -glm::normalize(dir);
+    CHECK(glm::length(b.w - back) < 4 * kEps);
+    CHECK(glm::dot(b.v, Vec3(0, 1, 0)) > 0);  // v is "up" on screen
+    CHECK(b.u.y == doctest::Approx(0).epsilon(4 * kEps));  // u is level: perpendicular to up
+}
+
+TEST_CASE("1.1 camera_basis of the standard camera is the world frame") {
+    const Basis b = camera_basis(Vec3(0, 0, -1), Vec3(0, 1, 0));
+    CHECK(b.u == Vec3(1, 0, 0));
+    CHECK(b.v == Vec3(0, 1, 0));
+    CHECK(b.w == Vec3(0, 0, 1));
+}
+
+TEST_CASE("1.2 window_point maps pixel centres per §9.2") {
+    // A 4x3 image on the window [-2, 2] x [-1.5, 1.5]: pixels are exactly 1 unit square.
+    const Window win{-2, 2, -1.5, 1.5};
+    const Vec2 first = window_point(0.5, 0.5, 4, 3, win);  // centre of pixel (0, 0)
+    CHECK(first.x == Real(-1.5));
+    CHECK(first.y == Real(-1));
+    const Vec2 last = window_point(3.5, 2.5, 4, 3, win);  // centre of pixel (3, 2)
+    CHECK(last.x == Real(1.5));
+    CHECK(last.y == Real(1));
+    // The image's outer edges are the window's edges.
+    CHECK(window_point(0, 0, 4, 3, win) == Vec2(-2, -1.5));
+    CHECK(window_point(4, 3, 4, 3, win) == Vec2(2, 1.5));
+
+    // u_s = l + (r - l)(i + 0.5)/n_x for every pixel of an odd-sized image on an offset window.
+    const Window w2{1, 3, -5, -4};
+    for (int i = 0; i < 7; ++i)
+        for (int j = 0; j < 5; ++j) {
+            const Vec2 p = window_point(Real(i) + Real(0.5), Real(j) + Real(0.5), 7, 5, w2);
+            CHECK(p.x == doctest::Approx(1 + 2 * (i + 0.5) / 7).epsilon(4 * kEps));
+            CHECK(p.y == doctest::Approx(-5 + 1 * (j + 0.5) / 5).epsilon(4 * kEps));
+        }
+}
+
+TEST_CASE("1.2 the centre pixel of an odd image looks straight ahead") {
+    const Window win{-1, 1, -1, 1};
+    CHECK(window_point(Real(1.5), Real(1.5), 3, 3, win) == Vec2(0, 0));
+}
+
+TEST_CASE("1.3 orthographic rays are parallel and start on the eye's plane") {
+    const Vec3 eye(1, 2, 3);
+    const Basis b = camera_basis(Vec3(0, 0, -1), Vec3(0, 1, 0));
+    const Ray r1 = orthographic_ray(eye, b, Vec2(-1, 0.5));
+    const Ray r2 = orthographic_ray(eye, b, Vec2(2, -3));
+    CHECK(r1.direction == -b.w);
+    CHECK(r2.direction == -b.w);
+    CHECK(r1.origin == Vec3(0, 2.5, 3));
+    CHECK(r2.origin == Vec3(3, -1, 3));
+}
+
+TEST_CASE("1.4 perspective rays leave the eye and reach the image plane at t = 1") {
+    const Vec3 eye(1, 2, 3);
+    const Basis b = camera_basis(Vec3(1, 1, -1), Vec3(0, 1, 0));
+    const Real d = 2.5;
+    const Vec2 uv(0.75, -0.25);
+    const Ray r = perspective_ray(eye, b, d, uv);
+    CHECK(r.origin == eye);
+    const Vec3 s = r.at(1) - eye;  // s - e, in uvw coordinates: (u_s, v_s, -d)
+    CHECK(glm::dot(s, b.u) == doctest::Approx(0.75).epsilon(8 * kEps));
+    CHECK(glm::dot(s, b.v) == doctest::Approx(-0.25).epsilon(8 * kEps));
+    CHECK(glm::dot(s, b.w) == doctest::Approx(-2.5).epsilon(8 * kEps));
+}
+
+TEST_CASE("View: the field of view is the angle the rays actually span (analytic)") {
+    // Independent of the window formulas: the ray through the middle of the top edge of the
+    // image makes half the vertical field of view with the view direction, for any aspect.
+    for (Real fov : {Real(10), Real(45), Real(90), Real(150)}) {
+        Camera cam;
+        cam.eye = Vec3(0.5, -1, 2);
+        cam.target = Vec3(3, 1, -4);
+        cam.vertical_fov_degrees = fov;
+        const View v = cam.view(640, 360);
+        const Vec3 ahead = glm::normalize(cam.target - cam.eye);
+        const Vec3 top = glm::normalize(v.ray(320, 360).direction);
+        const Vec3 side = glm::normalize(v.ray(640, 180).direction);
+        CAPTURE(fov);
+        CHECK(std::acos(glm::dot(top, ahead)) == doctest::Approx(glm::radians(fov) / 2).epsilon(1e-5));
+        // Square pixels: tan(horizontal half angle) = aspect * tan(vertical half angle).
+        CHECK(std::tan(std::acos(glm::dot(side, ahead))) ==
+              doctest::Approx(Real(640) / 360 * std::tan(glm::radians(fov) / 2)).epsilon(1e-4));
+    }
+}
+
+TEST_CASE("View: an orthographic window keeps its height and takes its width from the aspect") {
+    Camera cam;
+    cam.projection = Projection::orthographic;
+    cam.window_height = 3;
+    const View v = cam.view(200, 100);
+    CHECK(v.window.t - v.window.b == doctest::Approx(3));
+    CHECK(v.window.r - v.window.l == doctest::Approx(6));
+    // Pixel (0, 0) is the bottom-left one: its ray starts at the bottom-left of the window.
+    const Ray r = v.pixel_ray(0, 0);
+    CHECK(r.origin.x == doctest::Approx(-3 + 0.015));
+    CHECK(r.origin.y == doctest::Approx(-1.5 + 0.015));
+}
+
+TEST_CASE("stress: every pixel's ray passes through its window point, cameras at scales 1 to 1e5") {
+    pcg32 rng(2024);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    int checked = 0;
+    for (double scale : {1.0, 1e2, 1e5}) {
+        for (int k = 0; k < 50; ++k) {
+            Camera cam;
+            cam.eye = Vec3(Real(scale * unit(rng)), Real(scale * unit(rng)), Real(scale * unit(rng)));
+            cam.target = cam.eye + Vec3(Real(unit(rng)), Real(unit(rng)), Real(unit(rng)));
+            cam.vertical_fov_degrees = Real(20 + 100 * (unit(rng) + 1) / 2);
+            const View v = cam.view(37, 23);
+            for (int i = 0; i < 37; i += 6)
+                for (int j = 0; j < 23; j += 5) {
+                    const Ray r = v.pixel_ray(i, j);
+                    const Vec3 s = r.direction;  // = s - e, exactly (u_s, v_s, -d) in uvw
+                    const Vec2 want = window_point(Real(i) + Real(0.5), Real(j) + Real(0.5), 37, 23, v.window);
+                    // Directions are relative to the eye, so the eye's size does not enter.
+                    CHECK(std::abs(glm::dot(s, v.uvw.u) - want.x) < 16 * kEps * (1 + std::abs(want.x)));
+                    CHECK(std::abs(glm::dot(s, v.uvw.v) - want.y) < 16 * kEps * (1 + std::abs(want.y)));
+                    ++checked;
+                }
+        }
+    }
+    CHECK(checked == 3 * 50 * 7 * 5);
+}
+
+}

@@ -1,0 +1,218 @@
+// Chapter 02: ray-sphere intersection (§9.3.1).
+#include "common/integrators.hpp"
+#include "common/render.hpp"
+#include "common/sphere.hpp"
+#include "support.hpp"
+
+#include <pcg_random.hpp>
+
+#include <cmath>
+#include <memory>
+#include <random>
+
+using namespace rt;
+using rt::test::kEps;
+using rt::test::rel_error;
+
+namespace {
+
+using LVec = glm::vec<3, long double>;
+
+// The reference: both roots of the same (Real) inputs in long double, with the stable
+// formulas so that the reference itself loses nothing to cancellation.
+bool reference_roots(const Ray& r, const Vec3& c, Real R, long double& t_near, long double& t_far) {
+    const LVec d(r.direction), f = LVec(r.origin) - LVec(c);
+    const long double a = glm::dot(d, d), b = glm::dot(f, d), rr = (long double)R;
+    const LVec foot = f - (b / a) * d;
+    const long double h = std::sqrt(glm::dot(foot, foot));
+    const long double disc = a * (rr - h) * (rr + h);
+    if (disc < 0) return false;
+    const long double q = -(b + std::copysign(std::sqrt(disc), b));
+    const long double cc = glm::dot(f, f) - rr * rr;
+    t_near = std::min(q / a, cc / q);
+    t_far = std::max(q / a, cc / q);
+    return true;
+}
+
+// Rays from the origin at a unit sphere `distance` radii away, aimed at points spread
+// uniformly over `fraction` of its silhouette disk.
+template <class F>
+void far_sphere_rays(Real distance, Real fraction, int count, F&& f) {
+    pcg32 rng(7);
+    std::uniform_real_distribution<double> unit(0, 1);
+    const Vec3 c = glm::normalize(Vec3(0.6, 0.3, -0.74)) * distance;
+    const Vec3 ahead = glm::normalize(c);
+    const Vec3 side = glm::normalize(glm::cross(ahead, Vec3(0, 1, 0)));
+    const Vec3 up = glm::cross(side, ahead);
+    for (int k = 0; k < count; ++k) {
+        const double radius = fraction * std::sqrt(unit(rng)), phi = 2 * M_PI * unit(rng);
+        const Vec3 target = c + Real(radius * std::cos(phi)) * side + Real(radius * std::sin(phi)) * up;
+        f(Ray{Vec3(0), target}, c);
+    }
+}
+
+}  // namespace
+
+TEST_SUITE("ch02") {
+
+TEST_CASE("course exercise 1: (1,1,1) + t(-1,-1,-1) meets the unit sphere at t = 1 -+ 1/sqrt(3)") {
+    const Ray r{Vec3(1, 1, 1), Vec3(-1, -1, -1)};
+    const Real want_near = 1 - 1 / std::sqrt(Real(3)), want_far = 1 + 1 / std::sqrt(Real(3));
+    Real t_near = 0, t_far = 0;
+    SUBCASE("2.1 textbook") { REQUIRE(sphere_roots_textbook(r, Vec3(0), 1, t_near, t_far)); }
+    SUBCASE("2.2 stable") { REQUIRE(sphere_roots(r, Vec3(0), 1, t_near, t_far)); }
+    CHECK(t_near == doctest::Approx(want_near).epsilon(4 * kEps));
+    CHECK(t_far == doctest::Approx(want_far).epsilon(4 * kEps));
+}
+
+TEST_CASE("2.1/2.2 a miss, a tangent and a non-unit direction") {
+    Real tn = -1, tf = -1;
+    // Passes 1.5 from the centre of a unit sphere.
+    CHECK_FALSE(sphere_roots_textbook(Ray{Vec3(-5, 1.5, 0), Vec3(1, 0, 0)}, Vec3(0), 1, tn, tf));
+    CHECK_FALSE(sphere_roots(Ray{Vec3(-5, 1.5, 0), Vec3(1, 0, 0)}, Vec3(0), 1, tn, tf));
+    // Grazes the top of a unit sphere: a double root at t = 5 (all values exact).
+    REQUIRE(sphere_roots(Ray{Vec3(-5, 1, 0), Vec3(1, 0, 0)}, Vec3(0), 1, tn, tf));
+    CHECK(tn == 5);
+    CHECK(tf == 5);
+    REQUIRE(sphere_roots_textbook(Ray{Vec3(-5, 1, 0), Vec3(1, 0, 0)}, Vec3(0), 1, tn, tf));
+    CHECK(tn == 5);
+    // Scaling d by 4 divides t by 4: nothing may assume a unit direction.
+    REQUIRE(sphere_roots(Ray{Vec3(0, 0, 10), Vec3(0, 0, -4)}, Vec3(0, 0, 1), 2, tn, tf));
+    CHECK(tn == doctest::Approx(1.75).epsilon(4 * kEps));
+    CHECK(tf == doctest::Approx(2.75).epsilon(4 * kEps));
+    // Origin at the centre: roots -R/|d| and +R/|d|.
+    REQUIRE(sphere_roots(Ray{Vec3(3, 3, 3), Vec3(0, 2, 0)}, Vec3(3, 3, 3), 5, tn, tf));
+    CHECK(tn == doctest::Approx(-2.5).epsilon(4 * kEps));
+    CHECK(tf == doctest::Approx(2.5).epsilon(4 * kEps));
+}
+
+TEST_CASE("2.3 Sphere::hit takes the first root inside [t0, t1]") {
+    const Sphere s("ball", Vec3(0, 0, -5), 1);  // roots 4 and 6 along -z from the origin
+    const Ray r{Vec3(0), Vec3(0, 0, -1)};
+    HitRecord rec;
+    REQUIRE(s.hit(r, 0, kInfinity, rec));
+    CHECK(rec.t == doctest::Approx(4));
+    CHECK(rec.surface == &s);
+    CHECK(rec.p == Vec3(0, 0, -4));
+    CHECK(rec.normal == Vec3(0, 0, 1));  // unit, pointing out, towards the eye
+    CHECK_FALSE(rec.has_barycentrics);
+
+    HitRecord far;
+    REQUIRE(s.hit(r, 5, kInfinity, far));  // t0 past the near root: the far one
+    CHECK(far.t == doctest::Approx(6));
+    CHECK(far.normal == Vec3(0, 0, -1));  // still pointing out of the sphere
+
+    HitRecord none;
+    CHECK_FALSE(s.hit(r, 0, 3.5, none));  // both roots past t1
+    CHECK_FALSE(s.hit(r, 6.5, kInfinity, none));  // both roots before t0
+    CHECK_FALSE(s.hit(Ray{Vec3(0), Vec3(0, 0, 1)}, 0, kInfinity, none));  // sphere behind the eye
+    CHECK(none.surface == nullptr);  // a miss leaves the record alone
+}
+
+TEST_CASE("2.3 hit points lie on the sphere and normals are unit length") {
+    const Sphere s("ball", Vec3(1, -2, 3), 0.75);
+    pcg32 rng(3);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    int hits = 0;
+    for (int k = 0; k < 2000; ++k) {
+        const Vec3 origin(Real(4 * unit(rng)), Real(4 * unit(rng)), 10);
+        const Vec3 aim = s.center() + Vec3(Real(unit(rng)), Real(unit(rng)), Real(unit(rng)));
+        const Ray r{origin, aim - origin};
+        HitRecord rec;
+        if (!s.hit(r, 0, kInfinity, rec)) continue;
+        ++hits;
+        CHECK(std::abs(glm::length(rec.normal) - 1) < 4 * kEps);
+        CHECK(std::abs(glm::length(rec.p - s.center()) - s.radius()) < 8 * kEps);
+        CHECK(glm::dot(rec.normal, r.direction) < 0);  // seen from outside: facing the eye
+    }
+    CHECK(hits > 500);
+}
+
+TEST_CASE("stress: a sphere 10^4 radii away agrees with a long-double reference") {
+    // Tolerance: relative error of t_near at most 64 machine epsilons of Real (6e-6 in
+    // float, 1e-14 in double), with no false misses, for rays over 0.999 of the silhouette.
+    Real worst = 0;
+    int misses = 0, n = 0;
+    far_sphere_rays(1e4, Real(0.999), 20000, [&](const Ray& r, const Vec3& c) {
+        long double ref_near, ref_far;
+        REQUIRE(reference_roots(r, c, 1, ref_near, ref_far));
+        Real tn, tf;
+        ++n;
+        if (!sphere_roots(r, c, 1, tn, tf)) {
+            ++misses;
+            return;
+        }
+        worst = std::max({worst, rel_error(tn, ref_near), rel_error(tf, ref_far)});
+    });
+    MESSAGE("stable form, Real=" << std::string(real_name()) << ": worst relative error " << worst << " = "
+                                 << worst / kEps << " eps over " << n << " rays");
+    CHECK(misses == 0);
+    CHECK(worst <= 64 * kEps);
+}
+
+TEST_CASE("stress: the textbook form does lose digits there (why 2.2 exists)") {
+    // Not a tolerance on the textbook form but evidence for the book: its worst error is
+    // many times that of the stable form on the same rays.
+    Real worst_textbook = 0, worst_stable = 0;
+    int textbook_misses = 0;
+    far_sphere_rays(1e4, Real(0.99), 5000, [&](const Ray& r, const Vec3& c) {
+        long double ref_near, ref_far;
+        REQUIRE(reference_roots(r, c, 1, ref_near, ref_far));
+        Real tn, tf;
+        if (sphere_roots_textbook(r, c, 1, tn, tf))
+            worst_textbook = std::max(worst_textbook, rel_error(tn, ref_near));
+        else
+            ++textbook_misses;
+        REQUIRE(sphere_roots(r, c, 1, tn, tf));
+        worst_stable = std::max(worst_stable, rel_error(tn, ref_near));
+    });
+    MESSAGE("Real=" << std::string(real_name()) << ": textbook worst " << worst_textbook / kEps << " eps, " << textbook_misses
+                    << " false misses; stable worst " << worst_stable / kEps << " eps");
+    CHECK((textbook_misses > 0 || worst_textbook > 100 * std::max(worst_stable, kEps)));
+}
+
+TEST_CASE("stress: rays leaving a sphere's surface find t_near close to 0") {
+    // Secondary rays (shadows, reflections) start on a surface: c is nearly 0 and the
+    // small root must come out small, not swamped by the rounding of the large one.
+    pcg32 rng(11);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    const Vec3 c(100, -50, 25);
+    const Real R = 10;
+    for (int k = 0; k < 1000; ++k) {
+        const Vec3 n = glm::normalize(Vec3(Real(unit(rng)), Real(unit(rng)), Real(unit(rng))));
+        const Ray r{c + R * n, Vec3(Real(unit(rng)), Real(unit(rng)), Real(unit(rng)))};
+        Real tn, tf;
+        REQUIRE(sphere_roots(r, c, R, tn, tf));
+        const Real at_origin = std::abs(tn) < std::abs(tf) ? tn : tf;
+        // The origin is on the sphere to within rounding of c + R n (|c| + R ~ 120).
+        CHECK(std::abs(at_origin) * glm::length(r.direction) < 512 * kEps * 120);
+    }
+}
+
+TEST_CASE("analytic: an orthographic sphere covers pi R^2 of the window") {
+    // Count the pixels whose centre ray hits, and compare with the disk's area in pixels.
+    // The error is bounded by the pixels the silhouette crosses: about its perimeter.
+    Scene scene;
+    scene.camera.projection = Projection::orthographic;
+    scene.camera.eye = Vec3(0, 0, 10);
+    scene.camera.target = Vec3(0);
+    scene.camera.window_height = 4;
+    const Real R = 1.3;
+    scene.world = std::make_shared<Sphere>("s", Vec3(0), R);
+    scene.background = Color(0);
+    scene.integrator = std::make_shared<NormalIntegrator>();
+    RenderOptions o;
+    o.width = 400;
+    o.height = 400;
+    const Image img = render(scene, o).image;
+    int covered = 0;
+    for (const Color& c : img.pixels) covered += c != Color(0);
+    const double pixel = 4.0 / 400;
+    const double area = M_PI * R * R / (pixel * pixel);
+    const double perimeter = 2 * M_PI * R / pixel;
+    MESSAGE("covered " << covered << " pixels, disk area " << area << ", perimeter " << perimeter);
+    CHECK(std::abs(covered - area) < perimeter);
+    CHECK(std::abs(covered - area) < 0.01 * area);
+}
+
+}

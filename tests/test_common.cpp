@@ -1,0 +1,222 @@
+// The shared library: images, sampling, the render loop.
+#include "common/image.hpp"
+#include "common/integrators.hpp"
+#include "common/render.hpp"
+#include "common/camera.hpp"
+#include "common/sphere.hpp"
+#include "support.hpp"
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <memory>
+#include <unistd.h>
+
+using namespace rt;
+namespace fs = std::filesystem;
+
+namespace {
+
+fs::path temp_dir() {
+    const fs::path p = fs::temp_directory_path() / ("rtlab-test-" + std::to_string(::getpid()));
+    fs::create_directories(p);
+    return p;
+}
+
+Image gradient(int w, int h) {
+    Image img(w, h);
+    for (int y = 0; y < h; ++y)
+        for (int x = 0; x < w; ++x) img.at(x, y) = Color(float(x) / float(w - 1), float(y) / float(h - 1), 0.25f);
+    return img;
+}
+
+// A scene whose pixels depend on their random samples: spp > 1 jitters the rays over the
+// sphere's silhouette.
+Scene jittered_scene() {
+    Scene s;
+    s.camera.eye = Vec3(0);
+    s.camera.target = Vec3(0, 0, -1);
+    s.world = std::make_shared<Sphere>("s", Vec3(0.2, 0.1, -3), 1);
+    s.integrator = std::make_shared<NormalIntegrator>();
+    return s;
+}
+
+bool same_bits(const Image& a, const Image& b) {
+    return a.width == b.width && a.height == b.height &&
+           std::equal(a.pixels.begin(), a.pixels.end(), b.pixels.begin(),
+                      [](const Color& x, const Color& y) { return x.r == y.r && x.g == y.g && x.b == y.b; });
+}
+
+}  // namespace
+
+TEST_SUITE("common") {
+
+TEST_CASE("bounding_box of a sphere (§9.4.1)") {
+    const Box b = Sphere("s", Vec3(1, 2, 3), 2).bounding_box();
+    CHECK(b.min == Vec3(-1, 0, 1));
+    CHECK(b.max == Vec3(3, 4, 5));
+    CHECK_THROWS_AS(Sphere("bad", Vec3(0), 0), std::invalid_argument);
+    CHECK_THROWS_AS(Sphere("bad", Vec3(0), std::nan("")), std::invalid_argument);
+}
+
+TEST_CASE("View: degenerate cameras are rejected with a clear error") {
+    Camera cam;
+    cam.up = Vec3(0, 0, 1);  // parallel to the view direction (0, 0, -1)
+    CHECK_THROWS_WITH_AS(cam.view(10, 10), "camera: up is parallel to the view direction", std::invalid_argument);
+    cam.up = Vec3(0, 1, 0);
+    cam.target = cam.eye;
+    CHECK_THROWS_AS(cam.view(10, 10), std::invalid_argument);
+    cam.target = Vec3(0, 0, -1);
+    cam.vertical_fov_degrees = 180;
+    CHECK_THROWS_AS(cam.view(10, 10), std::invalid_argument);
+}
+
+TEST_CASE("sRGB transfer function: known values and round trip") {
+    CHECK(linear_to_srgb(0) == 0);
+    CHECK(linear_to_srgb(1) == doctest::Approx(1));
+    CHECK(linear_to_srgb(0.5f) == doctest::Approx(0.735357f).epsilon(1e-5));
+    CHECK(linear_to_srgb(0.002f) == doctest::Approx(0.02584f).epsilon(1e-4));  // the linear toe
+    CHECK(linear_to_srgb(-3) == 0);                                             // clamped
+    CHECK(linear_to_srgb(7) == doctest::Approx(1));
+    for (int i = 0; i <= 255; ++i)
+        CHECK(std::lround(255 * linear_to_srgb(srgb_to_linear(float(i) / 255))) == i);
+}
+
+TEST_CASE("PNG: written sRGB, read back to within one 8-bit step") {
+    const fs::path dir = temp_dir();
+    const Image img = gradient(33, 17);
+    write_image(img, (dir / "g.png").string());
+    const Image back = read_png((dir / "g.png").string());
+    REQUIRE(back.width == 33);
+    REQUIRE(back.height == 17);
+    for (std::size_t i = 0; i < img.pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c)
+            CHECK(std::abs(linear_to_srgb(back.pixels[i][c]) - linear_to_srgb(img.pixels[i][c])) <= 0.5f / 255 + 1e-6f);
+    CHECK(back.at(0, 0).r == 0);  // row 0 stays the top row
+    CHECK(back.at(0, 16).g == doctest::Approx(1));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("PFM: float data round-trips exactly, top row first in memory") {
+    const fs::path dir = temp_dir();
+    Image img = gradient(5, 4);
+    img.at(2, 1) = Color(1e-9f, 123.5f, -2.0f);  // PFM keeps what PNG cannot
+    write_image(img, (dir / "g.pfm").string());
+    const Image back = read_pfm((dir / "g.pfm").string());
+    CHECK(same_bits(img, back));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("image writers never leave a half file") {
+    const fs::path dir = temp_dir();
+    // A missing directory is created.
+    write_image(gradient(4, 4), (dir / "a" / "b" / "c.png").string());
+    CHECK(fs::exists(dir / "a" / "b" / "c.png"));
+    // An unknown extension is refused before anything is written.
+    CHECK_THROWS_WITH_AS(write_image(gradient(4, 4), (dir / "x.jpg").string()),
+                         doctest::Contains("extension must be .png or .pfm"), std::runtime_error);
+    // A target that cannot be created: an error, and no temporary left behind.
+    const fs::path blocked = dir / "file";
+    std::ofstream(blocked) << "not a directory";
+    CHECK_THROWS_AS(write_image(gradient(4, 4), (blocked / "x.png").string()), std::runtime_error);
+    int leftovers = 0;
+    for (const auto& e : fs::recursive_directory_iterator(dir))
+        leftovers += e.path().string().find(".tmp.") != std::string::npos;
+    CHECK(leftovers == 0);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("bad image files give one clear error") {
+    const fs::path dir = temp_dir();
+    std::ofstream(dir / "junk.png") << "this is not a PNG";
+    CHECK_THROWS_WITH_AS(read_png((dir / "junk.png").string()), doctest::Contains("cannot read image"), std::runtime_error);
+    CHECK_THROWS_AS(read_png((dir / "missing.png").string()), std::runtime_error);
+    std::ofstream(dir / "short.pfm") << "PF\n4 4\n-1.0\nabc";
+    CHECK_THROWS_WITH_AS(read_pfm((dir / "short.pfm").string()), doctest::Contains("truncated"), std::runtime_error);
+    std::ofstream(dir / "huge.pfm") << "PF\n999999999 4\n-1.0\n";
+    CHECK_THROWS_AS(read_pfm((dir / "huge.pfm").string()), std::runtime_error);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("Sampler: uniform in [0, 1), reproducible per (seed, pixel), distinct across pixels") {
+    Sampler a(5, 17), b(5, 17), c(5, 18), d(6, 17);
+    double sum = 0;
+    bool differs_pixel = false, differs_seed = false;
+    for (int i = 0; i < 10000; ++i) {
+        const Real x = a.uniform();
+        CHECK(x >= 0);
+        CHECK(x < 1);
+        CHECK(x == b.uniform());
+        differs_pixel |= x != c.uniform();
+        differs_seed |= x != d.uniform();
+        sum += x;
+    }
+    CHECK(differs_pixel);
+    CHECK(differs_seed);
+    CHECK(sum / 10000 == doctest::Approx(0.5).epsilon(0.02));
+}
+
+TEST_CASE("render: bit-identical images for any thread count") {
+    const Scene scene = jittered_scene();
+    RenderOptions o;
+    o.width = 67;  // not a multiple of the tile size
+    o.height = 45;
+    o.spp = 4;
+    o.seed = 99;
+    o.threads = 1;
+    const RenderResult one = render(scene, o);
+    o.threads = 2;
+    const RenderResult two = render(scene, o);
+    o.threads = 5;
+    const RenderResult five = render(scene, o);
+    CHECK(same_bits(one.image, two.image));
+    CHECK(same_bits(one.image, five.image));
+    CHECK(one.counters.camera == 67u * 45u * 4u);
+    CHECK(five.counters.camera == one.counters.camera);
+
+    o.seed = 100;  // another seed moves the jittered samples
+    CHECK_FALSE(same_bits(one.image, render(scene, o).image));
+}
+
+TEST_CASE("render: one sample per pixel is the pixel centre, whatever the seed") {
+    const Scene scene = jittered_scene();
+    RenderOptions o;
+    o.width = 20;
+    o.height = 10;
+    o.seed = 1;
+    const Image a = render(scene, o).image;
+    o.seed = 2;
+    CHECK(same_bits(a, render(scene, o).image));
+}
+
+TEST_CASE("render and pick reject bad requests") {
+    const Scene scene = jittered_scene();
+    RenderOptions o;
+    o.width = 0;
+    CHECK_THROWS_AS(render(scene, o), std::invalid_argument);
+    o.width = 10;
+    o.height = 10;
+    CHECK_THROWS_WITH_AS(pick(scene, o, 10, 0), doctest::Contains("outside"), std::invalid_argument);
+    Scene empty;
+    CHECK_THROWS_AS(render(empty, o), std::invalid_argument);
+}
+
+TEST_CASE("pick: what the centre pixel sees") {
+    const Scene scene = jittered_scene();
+    RenderOptions o;
+    o.width = 41;
+    o.height = 41;
+    const Pick p = pick(scene, o, 20, 20);
+    CHECK(p.ray.origin == Vec3(0));
+    REQUIRE(p.hit.has_value());
+    CHECK(p.hit->surface->name() == "s");
+    // The centre ray is the view direction (0, 0, -1); the sphere at (0.2, 0.1, -3) of radius
+    // 1 meets it at z = -3 + sqrt(1 - 0.05).
+    CHECK(p.hit->t == doctest::Approx(3 - std::sqrt(0.95)).epsilon(1e-6));
+    const Pick corner = pick(scene, o, 0, 0);
+    CHECK_FALSE(corner.hit.has_value());
+    CHECK(corner.ray.direction.y > 0);  // row 0 is the top of the image
+    CHECK(corner.ray.direction.x < 0);
+}
+
+}

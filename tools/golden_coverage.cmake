@@ -1,0 +1,11 @@
+# Fails if a scene that CHAPTER lists has no reference image in GOLDEN_DIR.
+execute_process(COMMAND ${CHAPTER} --list-scenes RESULT_VARIABLE code OUTPUT_VARIABLE scenes)
+if(NOT code EQUAL 0)
+    message(FATAL_ERROR "${CHAPTER} --list-scenes failed")
+endif()
+string(REPLACE "\n" ";" scenes "${scenes}")
+foreach(scene IN LISTS scenes)
+    if(scene AND NOT EXISTS "${GOLDEN_DIR}/${scene}.png")
+        message(FATAL_ERROR "scene ${scene} has no golden image ${GOLDEN_DIR}/${scene}.png (./lab golden)")
+    endif()
+endforeach()
