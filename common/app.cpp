@@ -29,6 +29,7 @@ json pick_json(const SceneEntry& entry, int x, int y, const Pick& p) {
         j["t"] = h.t;
         j["point"] = to_json(h.p);
         j["normal"] = to_json(h.normal);
+        if (h.primitive >= 0) j["triangle"] = h.primitive;
         if (h.has_barycentrics) {
             j["beta"] = h.beta;
             j["gamma"] = h.gamma;
@@ -38,9 +39,9 @@ json pick_json(const SceneEntry& entry, int x, int y, const Pick& p) {
 }
 
 json stats_json(const std::string& chapter, const SceneEntry& entry, const RenderOptions& o,
-                const RenderResult& r) {
+                const RenderResult& r, const SceneSummary& s) {
     const double mrays = r.seconds > 0 ? double(r.counters.total()) / r.seconds / 1e6 : 0.0;
-    return json{{"chapter", chapter},
+    json j{{"chapter", chapter},
                 {"scene", entry.name},
                 {"width", o.width},
                 {"height", o.height},
@@ -48,8 +49,17 @@ json stats_json(const std::string& chapter, const SceneEntry& entry, const Rende
                 {"threads", r.threads},
                 {"real", real_name()},
                 {"rays", {{"camera", r.counters.camera}, {"total", r.counters.total()}}},
+                {"shading", {{"light_terms", r.counters.light_terms}, {"specular_terms", r.counters.specular_terms}}},
+
                 {"seconds", r.seconds},
                 {"mrays_per_s", mrays}};
+    if (s.from_file) {  // what loading the scene file kept, and what it left out
+        j["scene_kept"] = {{"surfaces", s.surfaces}, {"triangles", s.triangles}, {"lights", s.lights},
+                           {"materials", s.materials}};
+        j["scene_skipped"] = {{"black_lights", s.lights_black}, {"unused_materials", s.materials_unused},
+                              {"degenerate_triangles", s.degenerate_triangles}};
+    }
+    return j;
 }
 
 bool valid_output(const std::string& path) {
@@ -102,8 +112,16 @@ int ChapterApp::run(int argc, char** argv) const {
     const SceneEntry* entry = nullptr;
     for (const SceneEntry& s : scenes_)
         if (s.name == scene_name) entry = &s;
+    SceneEntry file_entry;
+    if (!entry && scene_name.size() > 5 && scene_name.compare(scene_name.size() - 5, 5, ".json") == 0) {
+        std::string stem = scene_name.substr(scene_name.find_last_of('/') + 1);
+        stem = stem.substr(0, stem.size() - 5);
+        file_entry = {stem, "scene file " + scene_name,
+                      [path = scene_name](SceneSummary& summary) { return load_scene_file(path, &summary); }};
+        entry = &file_entry;
+    }
     if (!entry) {
-        std::fprintf(stderr, "%s: error: --scene: unknown scene '%s' (see --list-scenes)\n", id_.c_str(),
+        std::fprintf(stderr, "%s: error: --scene: unknown scene '%s' (see --list-scenes, or give a FILE.json)\n", id_.c_str(),
                      scene_name.c_str());
         return 2;
     }
@@ -114,7 +132,9 @@ int ChapterApp::run(int argc, char** argv) const {
     }
 
     try {
-        const Scene scene = entry->build();
+        SceneSummary summary;
+        Scene scene = entry->build(summary);
+        scene.name = entry->name;
         if (!pick_xy.empty()) {
             const Pick p = pick(scene, o, pick_xy[0], pick_xy[1]);
             std::printf("%s\n", pick_json(*entry, pick_xy[0], pick_xy[1], p).dump().c_str());
@@ -123,7 +143,10 @@ int ChapterApp::run(int argc, char** argv) const {
         o.progress = ::isatty(STDERR_FILENO) != 0;
         const RenderResult r = render(scene, o);
         write_image(r.image, output);
-        if (stats) std::printf("%s\n", stats_json(id_, *entry, o, r).dump().c_str());
+        if (stats) std::printf("%s\n", stats_json(id_, *entry, o, r, summary).dump().c_str());
+    } catch (const SceneError& e) {
+        std::fprintf(stderr, "%s: error: %s\n", id_.c_str(), e.what());
+        return 2;
     } catch (const std::invalid_argument& e) {
         std::fprintf(stderr, "%s: error: %s\n", id_.c_str(), e.what());
         return 2;

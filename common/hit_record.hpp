@@ -4,6 +4,7 @@
 namespace rt {
 
 class Surface;
+struct Material;
 
 // What a successful `hit` reports. Filled only by the hit that is kept: a surface writes
 // it after it knows its t is the closest one so far.
@@ -12,6 +13,8 @@ struct HitRecord {
     Vec3 p{0};       // hit point e + t d
     Vec3 normal{0};  // unit geometric normal, pointing out of the surface (never flipped)
     const Surface* surface = nullptr;
+    const Material* material = nullptr;
+    long primitive = -1;  // which triangle of a mesh, for picking
     // Barycentric coordinates, for the surfaces that have them (triangles).
     bool has_barycentrics = false;
     Real beta = 0;

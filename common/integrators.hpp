@@ -1,6 +1,10 @@
 #pragma once
-// The simple shading models of chapters 01-02: pictures of geometry, not of light.
+// The shading models: pictures of geometry (chapters 01-04), then of light (05).
 #include "common/scene.hpp"
+#include "common/shading.hpp"
+
+#include <memory>
+#include <string>
 
 namespace rt {
 
@@ -41,5 +45,47 @@ public:
         return Color(0.5f * (Color(rec.normal) + 1.0f));
     }
 };
+
+// Colour = the barycentric coordinates (1 - beta - gamma, beta, gamma) of a triangle hit;
+// other surfaces show their normal.
+class BarycentricIntegrator : public Integrator {
+public:
+    Color Li(const Scene& scene, const Ray& ray, Sampler&, RayCounters&) const override {
+        HitRecord rec;
+        if (!scene.hit(ray, 0, kInfinity, rec)) return scene.background;
+        if (!rec.has_barycentrics) return Color(0.5f * (Color(rec.normal) + 1.0f));
+        return Color(float(1 - rec.beta - rec.gamma), float(rec.beta), float(rec.gamma));
+    }
+};
+
+// The ray tracing program of §9.4: ambient + Lambert + Blinn-Phong for every light, no
+// shadows yet. Highlights are computed only for materials that have a specular colour.
+class PhongIntegrator : public Integrator {
+public:
+    Color Li(const Scene& scene, const Ray& ray, Sampler&, RayCounters& counters) const override {
+        HitRecord rec;
+        if (!scene.hit(ray, 0, kInfinity, rec)) return scene.background;
+        static const Material fallback{};
+        const Material& m = rec.material ? *rec.material : fallback;
+        // Shade the side the eye sees: flip the normal of a surface seen from behind.
+        const Vec3 n = glm::dot(rec.normal, ray.direction) < 0 ? rec.normal : -rec.normal;
+        const Vec3 v = -glm::normalize(ray.direction);
+        Color c = m.diffuse * scene.ambient;
+        for (const Light& light : scene.lights) {
+            const Vec3 l = light.to_light(rec.p);
+            ++counters.light_terms;
+            c += lambert(m.diffuse, light.color, n, l);
+            if (m.has_specular()) {
+                ++counters.specular_terms;
+                c += blinn_phong_highlight(m.specular, m.exponent, light.color, n, l, v);
+            }
+        }
+        return c;
+    }
+};
+
+// The integrator a scene file names: "phong", "normal", "barycentric" or "direction".
+// Null for an unknown name.
+std::shared_ptr<const Integrator> make_integrator(const std::string& name);
 
 }  // namespace rt

@@ -26,7 +26,7 @@ public:
         const int done = ++done_;
         if (!enabled_) return;
         const double t = seconds();
-        if (t < 1.0 && done < total_) return;
+        if (t < 1.0 && !shown_) return;
         std::unique_lock lock(mutex_, std::try_to_lock);
         if (!lock || (t - last_ < 0.1 && done < total_)) return;
         last_ = t;
@@ -49,7 +49,7 @@ private:
     std::atomic<int> done_{0};
     std::mutex mutex_;
     double last_ = -1;
-    bool shown_ = false;
+    std::atomic<bool> shown_{false};
 };
 
 void check(const Scene& scene, const RenderOptions& o) {

@@ -1,11 +1,14 @@
 #pragma once
 #include "common/camera.hpp"
 #include "common/counters.hpp"
+#include "common/light.hpp"
+#include "common/material.hpp"
 #include "common/sampler.hpp"
 #include "common/surface.hpp"
 
 #include <memory>
 #include <string>
+#include <vector>
 
 namespace rt {
 
@@ -26,6 +29,12 @@ struct Scene {
     std::shared_ptr<const Surface> world;  // null: nothing to hit
     Color background{0};
     std::shared_ptr<const Integrator> integrator;
+    Color ambient{0};           // c_a: ambient light, seen by every surface's diffuse colour
+    std::vector<Light> lights;  // only lights that can contribute: see drop_unused()
+
+    // What a scene does not use costs nothing per ray: lights that are black are removed
+    // here, once, instead of being looked at for every shading point. Returns how many.
+    int drop_unused_lights();
 
     bool hit(const Ray& ray, Real t0, Real t1, HitRecord& rec) const {
         return world && world->hit(ray, t0, t1, rec);

@@ -3,10 +3,13 @@
 #include "common/hit_record.hpp"
 #include "common/ray.hpp"
 
+#include <memory>
 #include <string>
 #include <utility>
 
 namespace rt {
+
+struct Material;
 
 // Anything a ray can hit (§9.4.1): primitives, lists of surfaces, and later the
 // acceleration structures, which are surfaces too.
@@ -21,8 +24,13 @@ public:
 
     const std::string& name() const { return name_; }
 
+    // What the surface is made of; null for the chapters that shade geometry only.
+    const Material* material() const { return material_.get(); }
+    void set_material(std::shared_ptr<const Material> m) { material_ = std::move(m); }
+
 private:
     std::string name_;
+    std::shared_ptr<const Material> material_;
 };
 
 }  // namespace rt

@@ -72,6 +72,7 @@ bool Sphere::hit(const Ray& ray, Real t0, Real t1, HitRecord& rec) const {
     rec.normal = n;
     rec.p = center_ + radius_ * n;
     rec.surface = this;
+    rec.material = material();
     rec.has_barycentrics = false;
     return true;
     // @end

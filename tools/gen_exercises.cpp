@@ -99,7 +99,7 @@ int main(int argc, char** argv) {
             if (have == want) continue;
             if (check) {
                 std::cerr << dst.string() << " is out of date with " << src.string()
-                          << ": run tools/gen-exercises (./lab exercises)\n";
+                          << ": run ./lab exercises\n";
                 ++stale;
             } else {
                 fs::create_directories(exercises);

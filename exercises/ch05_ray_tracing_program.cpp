@@ -1,0 +1,36 @@
+// STUDENT COPY of solutions/ch05_ray_tracing_program.cpp, made by tools/gen_exercises.cpp.
+// Write your code between each "@exercise" line and its "@end", in place of the throw.
+// Chapter 05 exercises: the ray tracing program (§9.4-9.4.1). Declared in
+// common/surface_list.hpp and common/shading.hpp.
+#include "common/exercise.hpp"
+#include "common/shading.hpp"
+#include "common/surface_list.hpp"
+
+#include <cmath>
+
+namespace rt {
+
+// @book closest
+bool SurfaceList::hit(const Ray& ray, Real t0, Real t1, HitRecord& rec) const {
+    // @exercise 5.1 | SurfaceList::hit | book §5.2
+    throw NotImplemented("exercise 5.1 (SurfaceList::hit) is not done yet: see book §5.2");
+    // @end
+}
+// @book-end
+
+// @book shading
+Color lambert(const Color& diffuse, const Color& light, const Vec3& n, const Vec3& l) {
+    // @exercise 5.2 | lambert | book §5.4
+    throw NotImplemented("exercise 5.2 (lambert) is not done yet: see book §5.4");
+    // @end
+}
+
+Color blinn_phong_highlight(const Color& specular, float exponent, const Color& light, const Vec3& n,
+                            const Vec3& l, const Vec3& v) {
+    // @exercise 5.3 | blinn_phong_highlight | book §5.4
+    throw NotImplemented("exercise 5.3 (blinn_phong_highlight) is not done yet: see book §5.4");
+    // @end
+}
+// @book-end
+
+}  // namespace rt

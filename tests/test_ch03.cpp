@@ -1,0 +1,160 @@
+// Chapter 03: ray-triangle intersection (§9.3.2).
+#include "common/leaks.hpp"
+#include "common/mesh.hpp"
+#include "common/procedural.hpp"
+#include "common/triangle.hpp"
+#include "support.hpp"
+
+#include <pcg_random.hpp>
+
+#include <map>
+#include <random>
+
+using namespace rt;
+using rt::test::kEps;
+
+namespace {
+
+// Both exercises, through one signature.
+using TriangleFn = bool (*)(const Ray&, const Vec3&, const Vec3&, const Vec3&, Real, Real, TriangleHit&);
+const std::pair<const char*, TriangleFn> kForms[] = {{"3.1 Cramer", ray_triangle},
+                                                     {"3.2 watertight", ray_triangle_watertight}};
+
+}  // namespace
+
+TEST_SUITE("ch03") {
+
+TEST_CASE("course exercise 2: (1,1,1) + t(-1,-1,-1) hits the triangle at t = 2/3, beta = gamma = 1/3") {
+    for (const auto& [form, fn] : kForms) {
+        CAPTURE(form);
+        TriangleHit h{};
+        REQUIRE(fn(Ray{Vec3(1, 1, 1), Vec3(-1, -1, -1)}, Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), 0, kInfinity, h));
+        CHECK(h.t == doctest::Approx(Real(2) / 3).epsilon(4 * kEps));
+        CHECK(h.beta == doctest::Approx(Real(1) / 3).epsilon(4 * kEps));
+        CHECK(h.gamma == doctest::Approx(Real(1) / 3).epsilon(4 * kEps));
+    }
+}
+
+TEST_CASE("3.1/3.2 misses, the interval, parallel rays and non-unit directions") {
+    const Vec3 a(0, 0, 0), b(2, 0, 0), c(0, 2, 0);
+    for (const auto& [form, fn] : kForms) {
+        CAPTURE(form);
+        TriangleHit h{};
+        // Beside the triangle (beta + gamma > 1), and behind the origin.
+        CHECK_FALSE(fn(Ray{Vec3(1.5, 1.5, 1), Vec3(0, 0, -1)}, a, b, c, 0, kInfinity, h));
+        CHECK_FALSE(fn(Ray{Vec3(0.5, 0.5, -1), Vec3(0, 0, -1)}, a, b, c, 0, kInfinity, h));
+        // Inside, at t = 4 with |d| = 0.25: only when 4 is in [t0, t1].
+        const Ray r{Vec3(0.5, 0.25, 1), Vec3(0, 0, -0.25)};
+        REQUIRE(fn(r, a, b, c, 0, kInfinity, h));
+        CHECK(h.t == doctest::Approx(4).epsilon(4 * kEps));
+        CHECK(h.beta == doctest::Approx(0.25).epsilon(4 * kEps));
+        CHECK(h.gamma == doctest::Approx(0.125).epsilon(4 * kEps));
+        CHECK_FALSE(fn(r, a, b, c, 0, 3.9, h));
+        CHECK_FALSE(fn(r, a, b, c, 4.1, kInfinity, h));
+        // In the triangle's plane: parallel, no hit.
+        CHECK_FALSE(fn(Ray{Vec3(-1, 0.5, 0), Vec3(1, 0, 0)}, a, b, c, 0, kInfinity, h));
+        // Either side: no back-face culling.
+        REQUIRE(fn(Ray{Vec3(0.5, 0.25, -1), Vec3(0, 0, 1)}, a, b, c, 0, kInfinity, h));
+        CHECK(h.t == doctest::Approx(1).epsilon(4 * kEps));
+    }
+}
+
+TEST_CASE("3.1 and 3.2 agree on random rays") {
+    pcg32 rng(5);
+    std::uniform_real_distribution<double> u(-1, 1);
+    auto rv = [&] { return Vec3(Real(u(rng)), Real(u(rng)), Real(u(rng))); };
+    int both = 0, disagree = 0;
+    for (int k = 0; k < 20000; ++k) {
+        const Vec3 a = rv(), b = rv(), c = rv();
+        const Ray r{Vec3(0, 0, 3) + rv(), rv() - Vec3(0, 0, 3)};
+        TriangleHit h1{}, h2{};
+        const bool x = ray_triangle(r, a, b, c, 0, kInfinity, h1), y = ray_triangle_watertight(r, a, b, c, 0, kInfinity, h2);
+        if (x != y) {  // allowed only within rounding of an edge
+            disagree += std::min({h1.beta, h1.gamma, 1 - h1.beta - h1.gamma, h2.beta, h2.gamma, 1 - h2.beta - h2.gamma}) < -1e-3;
+            continue;
+        }
+        if (!x) continue;
+        ++both;
+        CHECK(std::abs(h1.t - h2.t) < 1e3 * kEps * (1 + std::abs(h1.t)));
+        CHECK(std::abs(h1.beta - h2.beta) < Real(1e-3));
+        CHECK(std::abs(h1.gamma - h2.gamma) < Real(1e-3));
+    }
+    CHECK(both > 1000);
+    CHECK(disagree == 0);
+}
+
+TEST_CASE("Triangle and TriangleMesh fill the record: barycentrics, unit normal, closest triangle") {
+    const Triangle t("t", Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0));
+    HitRecord rec;
+    REQUIRE(t.hit(Ray{Vec3(0.25, 0.5, 2), Vec3(0, 0, -1)}, 0, kInfinity, rec));
+    CHECK(rec.has_barycentrics);
+    CHECK(rec.beta == doctest::Approx(0.25));
+    CHECK(rec.gamma == doctest::Approx(0.5));
+    CHECK(rec.normal == Vec3(0, 0, 1));  // counter-clockwise seen from +z
+    CHECK(rec.p == Vec3(0.25, 0.5, 0));
+    // Two parallel triangles in one mesh: the nearer one wins whatever their order.
+    MeshData m;
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}};
+    m.triangles = {{0, 1, 2}, {3, 4, 5}};
+    const TriangleMesh mesh("m", m);
+    REQUIRE(mesh.hit(Ray{Vec3(0.2, 0.2, 5), Vec3(0, 0, -1)}, 0, kInfinity, rec));
+    CHECK(rec.t == doctest::Approx(4));
+    CHECK(rec.primitive == 1);
+    REQUIRE(mesh.hit(Ray{Vec3(0.2, 0.2, -5), Vec3(0, 0, 1)}, 0, kInfinity, rec));
+    CHECK(rec.t == doctest::Approx(5));
+    CHECK(rec.primitive == 0);
+}
+
+TEST_CASE("procedural meshes are closed where they should be, with outward normals") {
+    for (const auto& [name, mesh] : {std::pair{"icosphere", icosphere(Vec3(1, 2, 3), 2, 2)},
+                                     std::pair{"cube", subdivided_cube(Vec3(1, 2, 3), 2, 3)}}) {
+        CAPTURE(name);
+        std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
+        for (const auto& t : mesh.triangles) {
+            const Vec3 n = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
+            const Vec3 centroid = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / Real(3);
+            CHECK(glm::dot(n, centroid - Vec3(1, 2, 3)) > 0);
+            for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
+        }
+        // Closed and consistently oriented: every directed edge once, and its reverse once.
+        for (const auto& [e, n] : directed) {
+            CHECK(n == 1);
+            CHECK(directed.count({e.second, e.first}) == 1);
+        }
+    }
+    CHECK(icosphere(Vec3(0), 1, 3).triangles.size() == 1280);
+    CHECK(subdivided_cube(Vec3(0), 1, 4).triangles.size() == 6 * 16 * 2);
+    CHECK(terrain(Vec3(0), 1, 1, 8).triangles.size() == 128);
+    CHECK_THROWS_AS(icosphere(Vec3(0), -1, 2), std::invalid_argument);
+}
+
+TEST_CASE("bad meshes are rejected, degenerate triangles dropped") {
+    MeshData m;
+    m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}};
+    m.triangles = {{0, 1, 9}};
+    CHECK_THROWS_WITH_AS(TriangleMesh("m", m), doctest::Contains("uses vertex 9 of 4"), std::invalid_argument);
+    m.triangles = {{0, 1, 2}, {0, 1, 3}};  // the second is collinear: zero area
+    const TriangleMesh mesh("m", m);
+    CHECK(mesh.dropped_degenerate() == 1);
+    CHECK(mesh.data().triangles.size() == 1);
+    m.triangles = {{0, 1, 3}};
+    CHECK_THROWS_AS(TriangleMesh("m", m), std::invalid_argument);
+    CHECK_THROWS_AS(Triangle("t", Vec3(0), Vec3(1, 0, 0), Vec3(2, 0, 0)), std::invalid_argument);
+}
+
+TEST_CASE("watertightness: 10^6 rays at shared edges and vertices, zero leaks for 3.2") {
+    // The table in book §3.5 comes from these numbers (and bench/watertight for more).
+    const MeshData sphere = icosphere(Vec3(0.1, -0.2, 0.3), 1, 3);
+    const MeshData cube = subdivided_cube(Vec3(0.1, -0.2, 0.3), 1.7, 8);
+    for (const auto& [name, mesh] : {std::pair{"icosphere", &sphere}, std::pair{"cube", &cube}}) {
+        const LeakReport wt = measure_leaks(*mesh, TriangleTest::watertight, 500000, 1);
+        const LeakReport cr = measure_leaks(*mesh, TriangleTest::cramer, 500000, 1);
+        MESSAGE("Real=" << std::string(real_name()) << " " << std::string(name) << ": " << wt.rays << " rays (" << wt.edge_rays
+                        << " at edges, " << wt.vertex_rays << " at vertices): Cramer leaks " << cr.leaks
+                        << ", watertight leaks " << wt.leaks);
+        CHECK(wt.rays == 500000);
+        CHECK(wt.leaks == 0);
+    }
+}
+
+}
