@@ -1,0 +1,133 @@
+// The scene-file loader and OBJ reader of the common library (book chapter 05, appendix A).
+#include "common/obj.hpp"
+#include "common/scene_file.hpp"
+#include "support.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <unistd.h>
+
+using namespace rt;
+namespace fs = std::filesystem;
+
+namespace {
+
+const std::string kScenes = std::string(RTLAB_SOURCE_DIR) + "/chapters/ch05_ray_tracing_program/scenes/";
+
+std::string load_error(const std::string& text) {
+    try {
+        load_scene_text(text, "test.json", ".");
+    } catch (const SceneError& e) {
+        return e.what();
+    }
+    return "no error";
+}
+
+const char* kMinimal = R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0]}, "surfaces": []})";
+
+}  // namespace
+
+TEST_SUITE("common") {
+
+TEST_CASE("every shipped scene file loads") {
+    int n = 0;
+    for (const auto& e : fs::directory_iterator(kScenes)) {
+        CAPTURE(e.path().string());
+        SceneSummary s;
+        const Scene scene = load_scene_file(e.path().string(), &s);
+        CHECK(scene.world != nullptr);
+        CHECK(s.surfaces > 0);
+        ++n;
+    }
+    CHECK(n >= 4);
+}
+
+TEST_CASE("scene file errors name the file, line, column and key") {
+    CHECK(load_error(kMinimal) == "no error");
+    CHECK(load_error("{\n  \"camera\": {\"eye\": [0, 0, 5], \"target\": [0, 0, 0]},\n  \"surfaces\": [],\n  \"colour\": 1\n}") ==
+          "test.json:4:3: /colour: unknown key 'colour' (expected one of: $schema, description, camera, shading, "
+          "background, ambient, materials, lights, surfaces)");
+    CHECK(load_error("{\"camera\": {\"eye\": [0, 0, 5], \"target\": [0, 0, 0]},\n \"surfaces\": [\n  {\"type\": \"sphere\", "
+                     "\"center\": [0, 0, 0], \"radius\": -1}]}") ==
+          "test.json:3:43: /surfaces/0/radius: must be > 0");
+    CHECK(load_error("{\"camera\": {\"eye\": [0, 0, 5], \"target\": [0, 0, 0]},\n \"surfaces\": [\n  {\"type\": \"sphere\", "
+                     "\"center\": [0, 0], \"radius\": 1}]}") ==
+          "test.json:3:22: /surfaces/0/center: must be an array of 3 numbers");
+    CHECK(load_error("{\"camera\": {\"eye\": [0, 0, 5]\n, \"target\": [0, 0, 0]},,}") .find("test.json:2:24: not valid JSON") == 0);
+    CHECK(load_error(R"({"surfaces": []})") == "test.json:1:1: /: missing key 'camera'");
+    CHECK(load_error(R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 5]}, "surfaces": []})") ==
+          "test.json:1:2: /camera: camera: eye and target are the same point");
+    const std::string prefix = R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0]}, )";
+    CHECK(load_error(prefix + R"("surfaces": [{"type": "sphere", "center": [0,0,0], "radius": 1, "material": "gold"}]})")
+              .find("/surfaces/0/material: no material named \"gold\"") != std::string::npos);
+    CHECK(load_error(prefix + R"("surfaces": [{"type": "teapot"}]})").find("unknown surface type \"teapot\"") != std::string::npos);
+    CHECK(load_error(prefix + R"("surfaces": [{"type": "polygon", "vertices": [[0,0,0],[1,1,1],[2,2,2]]}]})")
+              .find("/surfaces/0: polygon 'polygon 0': has no area") != std::string::npos);
+    CHECK(load_error(prefix + R"("surfaces": [{"type": "mesh", "file": "no/such.obj"}]})")
+              .find("/surfaces/0/file: mesh ./no/such.obj: no such file") != std::string::npos);
+    CHECK(load_error(prefix + R"("lights": [{"type": "spot", "position": [0,0,0]}], "surfaces": []})")
+              .find("/lights/0/type: must be \"point\" or \"directional\"") != std::string::npos);
+    CHECK(load_error(prefix + R"("materials": {"m": {"diffuse": [1,1,1], "shine": 3}}, "surfaces": []})")
+              .find("/materials/m/shine: unknown key 'shine'") != std::string::npos);
+    CHECK(load_error(prefix + R"("shading": "toon", "surfaces": []})").find("unknown shading \"toon\"") != std::string::npos);
+    CHECK_THROWS_WITH_AS(load_scene_file("/no/such/scene.json"), "/no/such/scene.json: cannot open scene file", SceneError);
+}
+
+TEST_CASE("OBJ meshes: faces fanned into triangles, bad files rejected in one line") {
+    const fs::path dir = fs::temp_directory_path() / ("rtlab-obj-" + std::to_string(::getpid()));
+    fs::create_directories(dir);
+    std::ofstream(dir / "quad.obj") << "# a unit square as one quad and a triangle\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\n"
+                                       "f 1 2 3 4\nf 2 5 3\n";
+    const MeshData m = load_obj((dir / "quad.obj").string());
+    CHECK(m.positions.size() == 5);
+    CHECK(m.triangles.size() == 3);
+    std::ofstream(dir / "bad.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 7\n";
+    CHECK_THROWS_AS(load_obj((dir / "bad.obj").string()), std::runtime_error);
+    std::ofstream(dir / "empty.obj") << "# nothing\n";
+    CHECK_THROWS_WITH_AS(load_obj((dir / "empty.obj").string()), doctest::Contains("no triangles"), std::runtime_error);
+    std::ofstream(dir / "binary.obj") << std::string("\x00\x01\x02\xff garbage", 12);
+    CHECK_THROWS_AS(load_obj((dir / "binary.obj").string()), std::runtime_error);
+    // From a scene file, relative to it, with scale and translate.
+    std::ofstream(dir / "scene.json") << R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0]},
+        "surfaces": [{"type": "mesh", "file": "quad.obj", "scale": 2, "translate": [0, 0, -1]}]})";
+    SceneSummary s;
+    const Scene scene = load_scene_file((dir / "scene.json").string(), &s);
+    CHECK(s.triangles == 3);
+    HitRecord rec;
+    REQUIRE(scene.hit(Ray{Vec3(0.5, 0.5, 5), Vec3(0, 0, -1)}, 0, kInfinity, rec));
+    CHECK(rec.t == doctest::Approx(6));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("the book's scene-format examples load, and the schema is valid JSON") {
+    // Appendix A's ```json blocks are complete scenes: the documentation cannot drift from
+    // the loader without this failing.
+    std::ifstream book(std::string(RTLAB_SOURCE_DIR) + "/book/appendix-a-scene-format.md");
+    REQUIRE(book);
+    std::string line, block;
+    bool inside = false;
+    int examples = 0;
+    while (std::getline(book, line)) {
+        if (!inside && line.rfind("```json", 0) == 0) {
+            inside = true;
+            block.clear();
+        } else if (inside && line.rfind("```", 0) == 0) {
+            inside = false;
+            ++examples;
+            CAPTURE(block);
+            CHECK_NOTHROW(load_scene_text(block, "appendix example " + std::to_string(examples), "."));
+        } else if (inside) {
+            block += line + "\n";
+        }
+    }
+    CHECK(examples >= 2);
+    std::ifstream schema(std::string(RTLAB_SOURCE_DIR) + "/common/scene.schema.json");
+    REQUIRE(schema);
+    const auto parsed = nlohmann::json::parse(schema, nullptr, false);
+    CHECK_FALSE(parsed.is_discarded());
+    CHECK(parsed.contains("properties"));
+}
+
+}
