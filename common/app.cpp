@@ -1,5 +1,6 @@
 #include "common/app.hpp"
 
+#include "common/image.hpp"
 #include "common/render.hpp"
 #include "common/version.hpp"
 
@@ -62,14 +63,6 @@ json stats_json(const std::string& chapter, const SceneEntry& entry, const Rende
     return j;
 }
 
-bool valid_output(const std::string& path) {
-    auto ends = [&](const char* s) {
-        const std::string suffix(s);
-        return path.size() > suffix.size() && path.compare(path.size() - suffix.size(), suffix.size(), suffix) == 0;
-    };
-    return ends(".png") || ends(".pfm");
-}
-
 }  // namespace
 
 int ChapterApp::run(int argc, char** argv) const {
@@ -126,7 +119,7 @@ int ChapterApp::run(int argc, char** argv) const {
         return 2;
     }
     if (output.empty()) output = "out/" + id_ + "/" + entry->name + ".png";
-    if (!valid_output(output)) {
+    if (!is_image_path(output)) {
         std::fprintf(stderr, "%s: error: --output: '%s' must end in .png or .pfm\n", id_.c_str(), output.c_str());
         return 2;
     }

@@ -89,10 +89,15 @@ static bool ends_with(const std::string& s, const std::string& suffix) {
     return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
+bool is_image_path(const std::string& path) {
+    // A bare ".png" names no file.
+    return path.size() > 4 && (ends_with(path, ".png") || ends_with(path, ".pfm"));
+}
+
 void write_image(const Image& image, const std::string& path) {
+    if (!is_image_path(path)) throw std::runtime_error("output " + path + ": extension must be .png or .pfm");
     if (ends_with(path, ".png")) return write_png(image, path);
-    if (ends_with(path, ".pfm")) return write_pfm(image, path);
-    throw std::runtime_error("output " + path + ": extension must be .png or .pfm");
+    return write_pfm(image, path);
 }
 
 Image read_png(const std::string& path) {

@@ -25,6 +25,9 @@ struct Image {
 float linear_to_srgb(float linear);
 float srgb_to_linear(float encoded);
 
+// True for the paths the writers accept: ending in .png or .pfm.
+bool is_image_path(const std::string& path);
+
 // Writers choose the format from the extension (.png: 8-bit sRGB, .pfm: linear float).
 // They write a temporary file next to the target and rename it, so a crash or a full disk
 // never leaves half an image under the final name. They throw std::runtime_error.

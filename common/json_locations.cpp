@@ -15,43 +15,20 @@ public:
         if (at_end()) return;
         const char c = s_[i_];
         if (c == '{') {
-            advance();
-            skip_space();
-            if (peek() == '}') return advance();
-            while (!at_end()) {
-                skip_space();
+            items('}', [&](int) {
                 const TextPosition key_pos = pos_;
-                const std::string key = string();
-                const std::string child = pointer + "/" + escape(key);
+                const std::string child = pointer + "/" + escape(string());
                 out_[child] = key_pos;
                 skip_space();
                 advance();  // ':'
                 value(child);
-                skip_space();
-                if (peek() == ',') {
-                    advance();
-                    continue;
-                }
-                advance();  // '}'
-                return;
-            }
+            });
         } else if (c == '[') {
-            advance();
-            skip_space();
-            if (peek() == ']') return advance();
-            for (int index = 0; !at_end(); ++index) {
-                skip_space();
+            items(']', [&](int index) {
                 const std::string child = pointer + "/" + std::to_string(index);
                 out_[child] = pos_;
                 value(child);
-                skip_space();
-                if (peek() == ',') {
-                    advance();
-                    continue;
-                }
-                advance();  // ']'
-                return;
-            }
+            });
         } else if (c == '"') {
             string();
         } else {
@@ -62,6 +39,22 @@ public:
     }
 
 private:
+    // The comma-separated members of an object or elements of an array, from the opening
+    // bracket through `close`.
+    template <class Item>
+    void items(char close, Item&& item) {
+        advance();
+        skip_space();
+        if (peek() == close) return advance();
+        for (int index = 0; !at_end(); ++index) {
+            skip_space();
+            item(index);
+            skip_space();
+            if (peek() != ',') return advance();  // the closing bracket
+            advance();
+        }
+    }
+
     static std::string escape(const std::string& key) {  // RFC 6901
         std::string r;
         for (char c : key) r += c == '~' ? std::string("~0") : c == '/' ? std::string("~1") : std::string(1, c);

@@ -75,8 +75,7 @@ LeakReport measure_leaks(const MeshData& mesh, TriangleTest test, long rays, std
             const auto& tri = mesh.triangles[t];
             TriangleHit h;
             const Vec3 &A = mesh.positions[tri[0]], &B = mesh.positions[tri[1]], &C = mesh.positions[tri[2]];
-            hit = test == TriangleTest::watertight ? ray_triangle_watertight(ray, A, B, C, 0, kInfinity, h)
-                                                   : ray_triangle(ray, A, B, C, 0, kInfinity, h);
+            hit = intersect_triangle(test, ray, A, B, C, 0, kInfinity, h);
             if (hit) break;
         }
         ++report.rays;

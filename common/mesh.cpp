@@ -42,9 +42,7 @@ bool TriangleMesh::hit(const Ray& ray, Real t0, Real t1, HitRecord& rec) const {
     for (const auto& tri : data_.triangles) {
         const Vec3 &a = data_.positions[tri[0]], &b = data_.positions[tri[1]], &c = data_.positions[tri[2]];
         TriangleHit h;
-        const bool found = test_ == TriangleTest::watertight ? ray_triangle_watertight(ray, a, b, c, t0, t1, h)
-                                                             : ray_triangle(ray, a, b, c, t0, t1, h);
-        if (found) {
+        if (intersect_triangle(test_, ray, a, b, c, t0, t1, h)) {
             best = &tri;
             best_hit = h;
             t1 = h.t;  // only closer hits from here on
@@ -52,7 +50,7 @@ bool TriangleMesh::hit(const Ray& ray, Real t0, Real t1, HitRecord& rec) const {
     }
     if (!best) return false;
     const auto& tri = *best;
-    fill_triangle_record(ray, data_.positions[tri[0]], data_.positions[tri[1]], data_.positions[tri[2]], best_hit,
+    fill_triangle_record(data_.positions[tri[0]], data_.positions[tri[1]], data_.positions[tri[2]], best_hit,
                          this, rec);
     rec.primitive = long(best - data_.triangles.data());
     return true;

@@ -60,8 +60,7 @@ void check(const Scene& scene, const RenderOptions& o) {
 
 }  // namespace
 
-Vec2 pixel_sample(int i, int j, int k, int spp, Sampler& sampler) {
-    (void)k;
+Vec2 pixel_sample(int i, int j, int spp, Sampler& sampler) {
     if (spp == 1) return Vec2(Real(i) + Real(0.5), Real(j) + Real(0.5));
     return Vec2(Real(i), Real(j)) + sampler.uniform2();
 }
@@ -88,7 +87,7 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
                 Sampler sampler(o.seed, std::uint64_t(y) * std::uint64_t(o.width) + std::uint64_t(i));
                 Color sum(0);
                 for (int k = 0; k < o.spp; ++k) {
-                    const Vec2 s = pixel_sample(i, j, k, o.spp, sampler);
+                    const Vec2 s = pixel_sample(i, j, o.spp, sampler);
                     const Ray ray = view.ray(s.x, s.y);
                     ++counters.camera;
                     sum += scene.integrator->Li(scene, ray, sampler, counters);

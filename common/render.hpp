@@ -27,9 +27,9 @@ struct RenderResult {
 // sampler. Exceptions from the integrator (an unfinished exercise) reach the caller.
 RenderResult render(const Scene& scene, const RenderOptions& options);
 
-// Where pixel (i, j) (j up from the bottom) puts its k-th sample, in continuous image
-// coordinates. One sample lands on the pixel centre; more are spread uniformly at random.
-Vec2 pixel_sample(int i, int j, int k, int spp, Sampler& sampler);
+// Where pixel (i, j) (j up from the bottom) puts a sample, in continuous image coordinates.
+// One sample lands on the pixel centre; more are spread uniformly at random.
+Vec2 pixel_sample(int i, int j, int spp, Sampler& sampler);
 
 // What the ray through the centre of image pixel (x, y) (y down from the top, as image
 // viewers count) sees: the picking use of ray tracing from the course's FAQ.

@@ -5,13 +5,12 @@
 
 namespace rt {
 
-void fill_triangle_record(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c, const TriangleHit& h,
+void fill_triangle_record(const Vec3& a, const Vec3& b, const Vec3& c, const TriangleHit& h,
                           const Surface* surface, HitRecord& rec) {
     rec.t = h.t;
     // The point from the barycentrics, not from e + t d: it lies in the triangle's plane to
     // within rounding of the vertices, whatever the ray's length.
     rec.p = a + h.beta * (b - a) + h.gamma * (c - a);
-    (void)ray;
     rec.normal = glm::normalize(glm::cross(b - a, c - a));
     rec.surface = surface;
     rec.material = surface->material();
@@ -30,9 +29,8 @@ Triangle::Triangle(std::string name, const Vec3& a, const Vec3& b, const Vec3& c
 
 bool Triangle::hit(const Ray& ray, Real t0, Real t1, HitRecord& rec) const {
     TriangleHit h;
-    const bool found = test_ == TriangleTest::watertight ? ray_triangle_watertight(ray, a_, b_, c_, t0, t1, h)
-                                                         : ray_triangle(ray, a_, b_, c_, t0, t1, h);
-    if (found) fill_triangle_record(ray, a_, b_, c_, h, this, rec);
+    const bool found = intersect_triangle(test_, ray, a_, b_, c_, t0, t1, h);
+    if (found) fill_triangle_record(a_, b_, c_, h, this, rec);
     return found;
 }
 

@@ -25,9 +25,16 @@ bool ray_triangle_watertight(const Ray& ray, const Vec3& a, const Vec3& b, const
 // Which of the two tests the triangle surfaces use.
 enum class TriangleTest { cramer, watertight };
 
+// The one place that chooses between them.
+inline bool intersect_triangle(TriangleTest test, const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c,
+                               Real t0, Real t1, TriangleHit& hit) {
+    return test == TriangleTest::watertight ? ray_triangle_watertight(ray, a, b, c, t0, t1, hit)
+                                            : ray_triangle(ray, a, b, c, t0, t1, hit);
+}
+
 // Fills rec for a triangle hit: unit geometric normal (b - a) x (c - a), counter-clockwise
 // vertices facing the viewer.
-void fill_triangle_record(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c, const TriangleHit& h,
+void fill_triangle_record(const Vec3& a, const Vec3& b, const Vec3& c, const TriangleHit& h,
                           const Surface* surface, HitRecord& rec);
 
 class Triangle : public Surface {
