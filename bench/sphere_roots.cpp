@@ -6,7 +6,7 @@
 // For spheres D radii from the eye, rays aimed over 0.999 of the silhouette: nanoseconds per
 // call (best of the interleaved rounds), worst relative error of t_near against a long-double
 // reference, and the rays wrongly reported as misses.
-#include "common/sphere.hpp"
+#include "geometry/sphere.hpp"
 
 #include <pcg_random.hpp>
 

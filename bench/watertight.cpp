@@ -6,9 +6,9 @@
 // Rays aimed exactly at shared edges and vertices of closed meshes (see common/leaks.hpp):
 // leaks, and nanoseconds per ray for each form, measured interleaved. With an OBJ path the
 // mesh is measured too (only its interior edges count; an open mesh has no others).
-#include "common/leaks.hpp"
-#include "common/obj.hpp"
-#include "common/procedural.hpp"
+#include "support/leaks.hpp"
+#include "io/obj.hpp"
+#include "geometry/procedural.hpp"
 
 #include <chrono>
 #include <cstdio>

@@ -1,6 +1,6 @@
-// Chapter 01 exercises: viewing rays (§9.2). Declared in common/camera.hpp.
-#include "common/camera.hpp"
-#include "common/exercise.hpp"
+// Chapter 01 exercises: viewing rays (book §1, course §9.2). Declared in common/render/camera.hpp.
+#include "render/camera.hpp"
+#include "core/exercise.hpp"
 
 namespace rt {
 

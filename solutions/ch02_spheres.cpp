@@ -1,6 +1,7 @@
-// Chapter 02 exercises: ray-sphere intersection (§9.3.1). Declared in common/sphere.hpp.
-#include "common/exercise.hpp"
-#include "common/sphere.hpp"
+// Chapter 02 exercises: ray-sphere intersection (book §2, course §9.3.1). Declared in
+// common/geometry/sphere.hpp.
+#include "core/exercise.hpp"
+#include "geometry/sphere.hpp"
 
 #include <cmath>
 
@@ -56,25 +57,21 @@ bool sphere_roots(const Ray& ray, const Vec3& center, Real radius, Real& t_near,
 // @book-end
 
 // @book hit
-bool Sphere::hit(const Ray& ray, Real t0, Real t1, HitRecord& rec) const {
-    // @exercise 2.3 | Sphere::hit | book §2.4
+bool hit(const Sphere& sphere, const Ray& ray, Interval interval, SphereHit& result) {
+    // @exercise 2.3 | hit(Sphere) | book §2.4
+    // The near root, unless it lies outside the interval (behind the eye, say, when the eye
+    // is inside the sphere): then the far one. The library builds the hit record from t.
     Real t_near, t_far;
-    if (!sphere_roots(ray, center_, radius_, t_near, t_far)) return false;
-    Real t = t_near;
-    if (t < t0 || t > t1) {
-        t = t_far;  // the near root is behind t0 (e.g. the eye is inside) or past t1
-        if (t < t0 || t > t1) return false;
+    if (!sphere_roots(ray, sphere.center, sphere.radius, t_near, t_far)) return false;
+    if (interval.contains(t_near)) {
+        result = SphereHit{t_near};
+        return true;
     }
-    // (p - c)/R is the unit normal of an exact p. The computed p carries the rounding of
-    // e + t d, so normalise, and put p back onto the sphere along it.
-    const Vec3 n = glm::normalize(ray.at(t) - center_);
-    rec.t = t;
-    rec.normal = n;
-    rec.p = center_ + radius_ * n;
-    rec.surface = this;
-    rec.material = material();
-    rec.has_barycentrics = false;
-    return true;
+    if (interval.contains(t_far)) {
+        result = SphereHit{t_far};
+        return true;
+    }
+    return false;
     // @end
 }
 // @book-end

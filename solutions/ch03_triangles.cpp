@@ -1,6 +1,7 @@
-// Chapter 03 exercises: ray-triangle intersection (§9.3.2). Declared in common/triangle.hpp.
-#include "common/exercise.hpp"
-#include "common/triangle.hpp"
+// Chapter 03 exercises: ray-triangle intersection (book §3, course §9.3.2). Declared in
+// common/geometry/triangle.hpp.
+#include "core/exercise.hpp"
+#include "geometry/triangle.hpp"
 
 #include <cmath>
 #include <type_traits>
@@ -9,8 +10,8 @@
 namespace rt {
 
 // @book cramer
-bool ray_triangle(const Ray& ray, const Vec3& A, const Vec3& B, const Vec3& C, Real t0, Real t1,
-                  TriangleHit& hit) {
+bool ray_triangle(const Ray& ray, const Vec3& A, const Vec3& B, const Vec3& C, Interval interval,
+                  TriangleHit& result) {
     // @exercise 3.1 | ray_triangle | book §3.2
     // The 3x3 system [a-b | a-c | d] (beta, gamma, t) = a - e, in the course's letters.
     const Vec3& d = ray.direction;
@@ -26,20 +27,20 @@ bool ray_triangle(const Ray& ray, const Vec3& A, const Vec3& B, const Vec3& C, R
     // Early exits in the course's order: t first (cheapest to reject in a scene), then gamma,
     // then beta.
     const Real t = -(f * ak_jb + e * jc_al + dd * bl_kc) / M;
-    if (t < t0 || t > t1) return false;
+    if (!interval.contains(t)) return false;
     const Real gamma = (i * ak_jb + h * jc_al + g * bl_kc) / M;
     if (gamma < 0 || gamma > 1) return false;
     const Real beta = (j * ei_hf + k * gf_di + l * dh_eg) / M;
     if (beta < 0 || beta > 1 - gamma) return false;
-    hit = TriangleHit{t, beta, gamma};
+    result = TriangleHit{t, beta, gamma};
     return true;
     // @end
 }
 // @book-end
 
 // @book watertight
-bool ray_triangle_watertight(const Ray& ray, const Vec3& A, const Vec3& B, const Vec3& C, Real t0, Real t1,
-                             TriangleHit& hit) {
+bool ray_triangle_watertight(const Ray& ray, const Vec3& A, const Vec3& B, const Vec3& C, Interval interval,
+                             TriangleHit& result) {
     // @exercise 3.2 | ray_triangle_watertight | book §3.4
     const Vec3& d = ray.direction;
     // Ray space: the axis where d is largest becomes z; swapping x and y when d_z < 0 keeps
@@ -74,12 +75,13 @@ bool ray_triangle_watertight(const Ray& ray, const Vec3& A, const Vec3& B, const
     const Real det = U + V + W;
     if (det == 0) return false;
 
-    // Scaled distance: t = T/det, tested against [t0, t1] without dividing first.
+    // Scaled distance: t = T/det, tested against the interval without dividing first.
     const Real T = U * (Sz * a[kz]) + V * (Sz * b[kz]) + W * (Sz * c[kz]);
+    const Real t0 = interval.min, t1 = interval.max;
     if (det > 0 ? (T < t0 * det || T > t1 * det) : (T > t0 * det || T < t1 * det)) return false;
     const Real inv = Real(1) / det;
     // U weights vertex A, V vertex B, W vertex C: beta and gamma are V and W.
-    hit = TriangleHit{T * inv, V * inv, W * inv};
+    result = TriangleHit{T * inv, V * inv, W * inv};
     return true;
     // @end
 }

@@ -1,6 +1,7 @@
-// Chapter 04 exercises: ray-polygon intersection (§9.3.3). Declared in common/polygon.hpp.
-#include "common/exercise.hpp"
-#include "common/polygon.hpp"
+// Chapter 04 exercises: ray-polygon intersection (book §4, course §9.3.3). Declared in
+// common/geometry/polygon.hpp.
+#include "core/exercise.hpp"
+#include "geometry/polygon.hpp"
 
 #include <cmath>
 
@@ -40,21 +41,17 @@ bool inside_polygon_2d(const std::vector<Vec2>& polygon, const Vec2& p) {
 // @book-end
 
 // @book polygon-hit
-bool Polygon::hit(const Ray& ray, Real t0, Real t1, HitRecord& rec) const {
-    // @exercise 4.3 | Polygon::hit | book §4.4
-    const Real denominator = glm::dot(ray.direction, normal_);
+bool hit(const Polygon& polygon, const Ray& ray, Interval interval, PolygonHit& result) {
+    // @exercise 4.3 | hit(Polygon) | book §4.4
+    const Vec3& n = polygon.normal();
+    const Real denominator = glm::dot(ray.direction, n);
     if (denominator == 0) return false;  // parallel to the plane
-    const Real t = glm::dot(vertices_[0] - ray.origin, normal_) / denominator;
-    if (!(t >= t0 && t <= t1)) return false;
+    const Real t = glm::dot(polygon.vertices()[0] - ray.origin, n) / denominator;
+    if (!interval.contains(t)) return false;
     const Vec3 p = ray.at(t);
-    if (!inside_polygon_2d(projected_, Vec2(p[axes_[0]], p[axes_[1]]))) return false;
-    rec.t = t;
-    rec.p = p;
-    rec.normal = normal_;
-    rec.surface = this;
-    rec.material = material();
-    rec.has_barycentrics = false;
-    rec.primitive = -1;
+    const auto& axes = polygon.axes();
+    if (!inside_polygon_2d(polygon.projected(), Vec2(p[axes[0]], p[axes[1]]))) return false;
+    result = PolygonHit{t};
     return true;
     // @end
 }

@@ -1,23 +1,24 @@
-// Chapter 05 exercises: the ray tracing program (§9.4-9.4.1). Declared in
-// common/surface_list.hpp and common/shading.hpp.
-#include "common/exercise.hpp"
-#include "common/shading.hpp"
-#include "common/surface_list.hpp"
+// Chapter 05 exercises: the ray tracing program (book §5, course §9.4-9.4.1). Declared in
+// common/accel/surface_list.hpp and common/shading/shading.hpp.
+#include "core/exercise.hpp"
+#include "shading/shading.hpp"
+#include "accel/surface_list.hpp"
 
 #include <cmath>
 
 namespace rt {
 
 // @book closest
-bool SurfaceList::hit(const Ray& ray, Real t0, Real t1, HitRecord& rec) const {
+bool SurfaceList::hit(const Ray& ray, Interval interval, HitRecord& rec) const {
     // @exercise 5.1 | SurfaceList::hit | book §5.2
     // Each hit shrinks the interval, so every later surface can only report something
-    // closer, and rec ends up describing the closest hit.
+    // closer, and rec ends up describing the closest hit. A surface that misses leaves rec
+    // alone; one that hits replaces all of it.
     bool found = false;
-    for (const auto& s : surfaces_)
-        if (s->hit(ray, t0, t1, rec)) {
+    for (const Surface& surface : surfaces_)
+        if (surface.hit(ray, interval, rec)) {
             found = true;
-            t1 = rec.t;
+            interval.max = rec.t;
         }
     return found;
     // @end

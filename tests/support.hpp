@@ -1,6 +1,6 @@
 #pragma once
 // Helpers shared by the unit tests.
-#include "common/real.hpp"
+#include "core/real.hpp"
 
 #include <doctest/doctest.h>
 

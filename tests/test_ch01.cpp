@@ -1,5 +1,5 @@
 // Chapter 01: viewing rays (§9.2).
-#include "common/camera.hpp"
+#include "render/camera.hpp"
 #include "support.hpp"
 
 #include <pcg_random.hpp>

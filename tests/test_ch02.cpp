@@ -1,7 +1,7 @@
 // Chapter 02: ray-sphere intersection (§9.3.1).
-#include "common/integrators.hpp"
-#include "common/render.hpp"
-#include "common/sphere.hpp"
+#include "render/integrators.hpp"
+#include "render/render.hpp"
+#include "geometry/sphere.hpp"
 #include "support.hpp"
 
 #include <pcg_random.hpp>

@@ -1,8 +1,8 @@
 // Chapter 03: ray-triangle intersection (§9.3.2).
-#include "common/leaks.hpp"
-#include "common/mesh.hpp"
-#include "common/procedural.hpp"
-#include "common/triangle.hpp"
+#include "support/leaks.hpp"
+#include "geometry/mesh.hpp"
+#include "geometry/procedural.hpp"
+#include "geometry/triangle.hpp"
 #include "support.hpp"
 
 #include <pcg_random.hpp>

@@ -1,5 +1,5 @@
 // Chapter 04: ray-polygon intersection (§9.3.3).
-#include "common/polygon.hpp"
+#include "geometry/polygon.hpp"
 #include "support.hpp"
 
 #include <pcg_random.hpp>

@@ -1,9 +1,9 @@
 // Chapter 05: the ray tracing program (§9.4-9.4.1): closest hit, shading, scene files.
-#include "common/integrators.hpp"
-#include "common/render.hpp"
-#include "common/scene_file.hpp"
-#include "common/sphere.hpp"
-#include "common/surface_list.hpp"
+#include "render/integrators.hpp"
+#include "render/render.hpp"
+#include "io/scene_file.hpp"
+#include "geometry/sphere.hpp"
+#include "accel/surface_list.hpp"
 #include "support.hpp"
 
 #include <cmath>

@@ -1,9 +1,9 @@
 // The shared library: images, sampling, the render loop.
-#include "common/image.hpp"
-#include "common/integrators.hpp"
-#include "common/render.hpp"
-#include "common/camera.hpp"
-#include "common/sphere.hpp"
+#include "io/image_file.hpp"
+#include "render/integrators.hpp"
+#include "render/render.hpp"
+#include "render/camera.hpp"
+#include "geometry/sphere.hpp"
 #include "support.hpp"
 
 #include <cstdio>

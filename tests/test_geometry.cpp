@@ -1,8 +1,8 @@
 // Geometry the exercises build on but do not implement: meshes and polygon validation.
-#include "common/mesh.hpp"
-#include "common/polygon.hpp"
-#include "common/procedural.hpp"
-#include "common/triangle.hpp"
+#include "geometry/mesh.hpp"
+#include "geometry/polygon.hpp"
+#include "geometry/procedural.hpp"
+#include "geometry/triangle.hpp"
 #include "support.hpp"
 
 #include <cmath>

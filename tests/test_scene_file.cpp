@@ -1,6 +1,6 @@
 // The scene-file loader and OBJ reader of the common library (book chapter 05, appendix A).
-#include "common/obj.hpp"
-#include "common/scene_file.hpp"
+#include "io/obj.hpp"
+#include "io/scene_file.hpp"
 #include "support.hpp"
 
 #include <nlohmann/json.hpp>

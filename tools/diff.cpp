@@ -5,7 +5,7 @@
 // R of it in the other image, both ways, so an edge that moved by a pixel is not an error.
 //
 // Exit: 0 within tolerance, 1 past it, 2 bad input.
-#include "common/image.hpp"
+#include "io/image_file.hpp"
 
 #include <CLI/CLI.hpp>
 

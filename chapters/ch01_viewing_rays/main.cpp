@@ -1,6 +1,6 @@
 // Chapter 01: viewing rays. Pictures of the rays themselves, before there is anything to hit.
-#include "common/app.hpp"
-#include "common/integrators.hpp"
+#include "app/app.hpp"
+#include "render/integrators.hpp"
 
 #include <memory>
 

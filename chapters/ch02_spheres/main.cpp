@@ -1,22 +1,17 @@
 // Chapter 02: spheres, shaded by their unit normals.
-#include "common/app.hpp"
-#include "common/integrators.hpp"
-#include "common/sphere.hpp"
+#include "app/app.hpp"
+#include "render/integrators.hpp"
+#include "geometry/sphere.hpp"
 
 #include <memory>
 
 using namespace rt;
 
 static Scene sphere_scene(Projection projection, Vec3 eye, Vec3 center, Real radius, Real vfov_degrees) {
-    Scene s;
+    Scene s = look_at(eye, center, vfov_degrees, std::make_shared<NormalIntegrator>());
     s.camera.projection = projection;
-    s.camera.eye = eye;
-    s.camera.target = center;
-    s.camera.vertical_fov_degrees = vfov_degrees;
     s.camera.window_height = 3 * radius;
-    s.world = std::make_shared<Sphere>("sphere", center, radius);
-    s.background = Color(0.1f, 0.1f, 0.12f);
-    s.integrator = std::make_shared<NormalIntegrator>();
+    s.surfaces.add(Sphere(center, radius), 0, "sphere");
     return s;
 }
 

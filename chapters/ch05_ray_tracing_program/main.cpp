@@ -1,6 +1,6 @@
 // Chapter 05: the ray tracing program. Its scenes are scene files (scenes/*.json): the same
 // format every chapter accepts with --scene FILE.json.
-#include "common/app.hpp"
+#include "app/app.hpp"
 
 using namespace rt;
 

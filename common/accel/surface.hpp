@@ -1,0 +1,23 @@
+#pragma once
+// A surface (course §9.4.1) binds a shape to what it is made of. The shape is geometry
+// only; the surface adds the material, and later chapters add a transform (instancing) or
+// a motion (motion blur) the same way, without touching the shapes.
+#include "geometry/shape.hpp"
+
+namespace rt {
+
+struct Surface {
+    Shape shape;
+    MaterialId material = 0;  // index into the scene's materials; 0 = the default
+    SurfaceId id = kNone;     // its place in the scene's surface list, stamped on its hits
+
+    // The closest hit in the interval, as a whole record. False and rec untouched if none.
+    bool hit(const Ray& ray, Interval interval, HitRecord& rec) const {
+        return hit_record(shape, ray, interval, SurfaceRef{id, material}, rec);
+    }
+    // Is there any hit in the interval? Stops at the first one found.
+    bool occluded(const Ray& ray, Interval interval) const { return rt::occluded(shape, ray, interval); }
+    Box bounding_box() const { return rt::bounding_box(shape); }
+};
+
+}  // namespace rt

@@ -1,0 +1,35 @@
+#pragma once
+// The scene's surfaces, in one flat list (course §9.4): the brute-force search every
+// acceleration structure of chapters 10-12 must agree with, hit for hit.
+#include "accel/surface.hpp"
+
+#include <string>
+#include <vector>
+
+namespace rt {
+
+class SurfaceList {
+public:
+    // Adds a surface and returns its id. An empty name becomes "KIND N" (e.g. "sphere 3").
+    SurfaceId add(Shape shape, MaterialId material = 0, std::string name = "");
+
+    // Exercise 5.1: the closest hit over all surfaces in the interval.
+    bool hit(const Ray& ray, Interval interval, HitRecord& rec) const;
+    // Any hit in the interval, stopping at the first: the query of shadow rays.
+    bool occluded(const Ray& ray, Interval interval) const;
+    Box bounding_box() const { return box_; }
+
+    std::size_t size() const { return surfaces_.size(); }
+    bool empty() const { return surfaces_.empty(); }
+    const Surface& operator[](SurfaceId id) const { return surfaces_[id]; }
+    const std::vector<Surface>& surfaces() const { return surfaces_; }
+    // Names live apart from the surfaces: the hot loop never touches them.
+    const std::string& name(SurfaceId id) const { return names_[id]; }
+
+private:
+    std::vector<Surface> surfaces_;
+    std::vector<std::string> names_;
+    Box box_;
+};
+
+}  // namespace rt

@@ -1,0 +1,36 @@
+#pragma once
+// Rays cast, by kind, and shading work done. Each render tile counts into its own copy and
+// the copies are summed at the end, so counting costs no synchronisation on the hot path.
+#include <array>
+#include <cstddef>
+#include <cstdint>
+
+namespace rt {
+
+// Why a ray was cast: what --stats counts them by, and what the recursion context carries.
+enum class RayKind : std::uint8_t { camera, shadow, reflection, refraction };
+inline constexpr std::size_t kRayKinds = 4;
+inline constexpr const char* kRayKindNames[kRayKinds] = {"camera", "shadow", "reflection", "refraction"};
+
+struct RayCounters {
+    std::array<std::uint64_t, kRayKinds> rays{};
+    // Shading work, so --stats can show what a scene skips.
+    std::uint64_t light_terms = 0;     // light evaluations at shading points
+    std::uint64_t specular_terms = 0;  // of those, highlights computed (not skipped)
+
+    void count(RayKind kind) { ++rays[std::size_t(kind)]; }
+    std::uint64_t of(RayKind kind) const { return rays[std::size_t(kind)]; }
+    std::uint64_t total() const {
+        std::uint64_t sum = 0;
+        for (std::uint64_t n : rays) sum += n;
+        return sum;
+    }
+    RayCounters& operator+=(const RayCounters& o) {
+        for (std::size_t k = 0; k < kRayKinds; ++k) rays[k] += o.rays[k];
+        light_terms += o.light_terms;
+        specular_terms += o.specular_terms;
+        return *this;
+    }
+};
+
+}  // namespace rt

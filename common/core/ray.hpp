@@ -1,0 +1,17 @@
+#pragma once
+#include "core/real.hpp"
+
+namespace rt {
+
+// p(t) = e + t d. The direction is deliberately *not* normalised: instancing transforms
+// rays into object space, where the length of d changes, and every hit routine must still
+// return the t of the original ray.
+struct Ray {
+    Vec3 origin;     // e
+    Vec3 direction;  // d, any non-zero length
+    Real time = 0;   // when the ray is cast, in [0, 1) of the shutter interval (motion blur)
+
+    Vec3 at(Real t) const { return origin + t * direction; }
+};
+
+}  // namespace rt

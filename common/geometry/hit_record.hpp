@@ -1,0 +1,36 @@
+#pragma once
+#include "core/real.hpp"
+
+#include <cstdint>
+
+namespace rt {
+
+// Surfaces and materials are addressed by index into the scene's lists: small, plain
+// records that an acceleration structure can hold by the million.
+using SurfaceId = std::uint32_t;
+using MaterialId = std::uint32_t;
+inline constexpr std::uint32_t kNone = ~std::uint32_t(0);
+
+// Who owns a hit: the surface (shape + material) the library stamps on every record.
+struct SurfaceRef {
+    SurfaceId surface = kNone;
+    MaterialId material = 0;  // 0: the scene's default material
+};
+
+// Everything a successful query reports. Always built whole, by one library function per
+// shape kind (`record`), and assigned in one piece: no field can survive from an earlier,
+// farther hit on another surface.
+struct HitRecord {
+    Real t = kInfinity;
+    Vec3 p{0};       // the hit point
+    Vec3 normal{0};  // unit geometric normal, pointing out of the surface (never flipped)
+    SurfaceId surface = kNone;
+    MaterialId material = 0;
+    std::uint32_t primitive = kNone;  // which triangle of a mesh, for picking
+    // Barycentric coordinates, for the shapes that have them (triangles).
+    bool has_barycentrics = false;
+    Real beta = 0;
+    Real gamma = 0;
+};
+
+}  // namespace rt

@@ -1,0 +1,54 @@
+#pragma once
+// Indexed triangle meshes. Triangles share vertices by index, so an edge common to two
+// triangles has bit-identical end points in both: what the watertight test needs.
+#include "geometry/triangle.hpp"
+
+#include <array>
+#include <cstdint>
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rt {
+
+struct MeshData {
+    std::vector<Vec3> positions;
+    std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise seen from outside
+};
+
+// Throws std::invalid_argument naming the first problem: an index out of range, a
+// non-finite position, no triangles.
+void validate(const MeshData& mesh, const std::string& what);
+
+// A mesh: geometry only. Its data is shared, so copies of a Mesh (two surfaces wearing
+// different materials, later two instances) cost one pointer, not a copy of the triangles.
+// Until the acceleration chapters, a ray tests every triangle: the brute-force search of
+// course §9.4. Degenerate (zero-area) triangles are dropped once, here, so they cost
+// nothing per ray.
+class Mesh {
+public:
+    explicit Mesh(MeshData data);
+
+    const MeshData& data() const { return *data_; }
+    std::size_t dropped_degenerate() const { return dropped_; }
+    const Box& box() const { return box_; }
+
+private:
+    std::shared_ptr<const MeshData> data_;
+    std::size_t dropped_ = 0;
+    Box box_;
+};
+
+// Which triangle a ray met, and where.
+struct MeshHit {
+    TriangleHit triangle;
+    std::uint32_t index;
+};
+
+bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result);
+// True as soon as any triangle is hit in the interval: shadow rays need no closest hit.
+bool occluded(const Mesh& mesh, const Ray& ray, Interval interval);
+HitRecord record(const Mesh& mesh, const Ray& ray, const MeshHit& h, SurfaceRef who = {});
+inline Box bounding_box(const Mesh& mesh) { return mesh.box(); }
+
+}  // namespace rt

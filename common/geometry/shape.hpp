@@ -1,0 +1,74 @@
+#pragma once
+// A shape is geometry only: one of a closed set of plain structs. Queries on a Shape are a
+// switch over that set (std::visit), not a virtual call through a pointer, so the compiler
+// can inline each kind's test into the loop that calls it.
+#include "geometry/mesh.hpp"
+#include "geometry/polygon.hpp"
+#include "geometry/sphere.hpp"
+#include "geometry/triangle.hpp"
+
+#include <variant>
+
+namespace rt {
+
+using Shape = std::variant<Sphere, Triangle, Polygon, Mesh>;
+
+// The kind's name, as scene files and --pick say it.
+inline const char* shape_kind(const Shape& shape) {
+    constexpr const char* names[] = {"sphere", "triangle", "polygon", "mesh"};
+    return names[shape.index()];
+}
+
+// What each kind's own test reports.
+template <class S>
+struct SmallHitOf;
+template <>
+struct SmallHitOf<Sphere> {
+    using type = SphereHit;
+};
+template <>
+struct SmallHitOf<Triangle> {
+    using type = TriangleHit;
+};
+template <>
+struct SmallHitOf<Polygon> {
+    using type = PolygonHit;
+};
+template <>
+struct SmallHitOf<Mesh> {
+    using type = MeshHit;
+};
+template <class S>
+using SmallHit = typename SmallHitOf<S>::type;
+
+// The closest hit of one shape in the interval, as a whole record owned by `who`. The
+// shape's own test finds the small result; `record` builds everything else from it.
+template <class S>
+bool hit_record(const S& shape, const Ray& ray, Interval interval, SurfaceRef who, HitRecord& rec) {
+    SmallHit<S> h;
+    if (!hit(shape, ray, interval, h)) return false;
+    rec = record(shape, ray, h, who);
+    return true;
+}
+
+inline bool hit_record(const Shape& shape, const Ray& ray, Interval interval, SurfaceRef who, HitRecord& rec) {
+    return std::visit([&](const auto& s) { return hit_record(s, ray, interval, who, rec); }, shape);
+}
+
+// Any hit in the interval: what a shadow ray asks. A mesh stops at its first triangle.
+template <class S>
+bool occluded(const S& shape, const Ray& ray, Interval interval) {
+    SmallHit<S> h;
+    return hit(shape, ray, interval, h);
+}
+bool occluded(const Mesh& mesh, const Ray& ray, Interval interval);
+
+inline bool occluded(const Shape& shape, const Ray& ray, Interval interval) {
+    return std::visit([&](const auto& s) { return occluded(s, ray, interval); }, shape);
+}
+
+inline Box bounding_box(const Shape& shape) {
+    return std::visit([](const auto& s) { return bounding_box(s); }, shape);
+}
+
+}  // namespace rt

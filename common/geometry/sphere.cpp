@@ -1,0 +1,32 @@
+#include "geometry/sphere.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace rt {
+
+Sphere::Sphere(const Vec3& c, Real r) : center(c), radius(r) {
+    if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z))
+        throw std::invalid_argument("sphere: centre must be finite");
+    if (!(r > 0) || !std::isfinite(r)) throw std::invalid_argument("sphere: radius must be finite and > 0");
+}
+
+HitRecord record(const Sphere& s, const Ray& ray, const SphereHit& h, SurfaceRef who) {
+    // (p - c)/R is the unit normal of an exact p. The computed p carries the rounding of
+    // e + t d, so normalise, and put p back onto the sphere along it.
+    const Vec3 n = glm::normalize(ray.at(h.t) - s.center);
+    HitRecord rec;
+    rec.t = h.t;
+    rec.p = s.center + s.radius * n;
+    rec.normal = n;
+    rec.surface = who.surface;
+    rec.material = who.material;
+    return rec;
+}
+
+Box bounding_box(const Sphere& s) {
+    const Vec3 r(s.radius);
+    return Box{s.center - r, s.center + r};
+}
+
+}  // namespace rt

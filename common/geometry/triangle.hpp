@@ -1,0 +1,57 @@
+#pragma once
+// Ray-triangle intersection (book §3, course §9.3.2). ray_triangle and
+// ray_triangle_watertight are the chapter 03 exercises (solutions/ch03_triangles.cpp).
+#include "core/box.hpp"
+#include "core/interval.hpp"
+#include "core/ray.hpp"
+#include "geometry/hit_record.hpp"
+
+namespace rt {
+
+// Where a ray meets a triangle: e + t d = a + beta (b - a) + gamma (c - a).
+struct TriangleHit {
+    Real t, beta, gamma;
+};
+
+// Exercise 3.1: Cramer's rule with the shared sub-terms and the course's early exits
+// (t, then gamma, then beta). True if t is in the interval and the point is in the triangle.
+bool ray_triangle(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c, Interval interval,
+                  TriangleHit& result);
+
+// Exercise 3.2: the watertight test of Woop, Benthin and Wald (2013). A ray through an edge
+// or vertex shared by two triangles (bit-identical vertices) hits at least one of them.
+bool ray_triangle_watertight(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c, Interval interval,
+                             TriangleHit& result);
+
+// Which of the two tests to use, for the benchmarks and the leak measurements that compare
+// them. Shapes always use the watertight one.
+enum class TriangleTest { cramer, watertight };
+
+inline bool intersect_triangle(TriangleTest test, const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c,
+                               Interval interval, TriangleHit& result) {
+    return test == TriangleTest::watertight ? ray_triangle_watertight(ray, a, b, c, interval, result)
+                                            : ray_triangle(ray, a, b, c, interval, result);
+}
+
+// The whole record for a triangle hit: unit geometric normal (b - a) x (c - a), so
+// counter-clockwise vertices face the viewer.
+HitRecord triangle_record(const Vec3& a, const Vec3& b, const Vec3& c, const TriangleHit& h, SurfaceRef who,
+                          std::uint32_t primitive = kNone);
+
+// One triangle: geometry only.
+struct Triangle {
+    Vec3 a, b, c;
+
+    // Throws std::invalid_argument for a degenerate (zero-area) or non-finite triangle.
+    Triangle(const Vec3& a, const Vec3& b, const Vec3& c);
+};
+
+inline bool hit(const Triangle& tri, const Ray& ray, Interval interval, TriangleHit& result) {
+    return ray_triangle_watertight(ray, tri.a, tri.b, tri.c, interval, result);
+}
+inline HitRecord record(const Triangle& tri, const Ray&, const TriangleHit& h, SurfaceRef who = {}) {
+    return triangle_record(tri.a, tri.b, tri.c, h, who);
+}
+Box bounding_box(const Triangle& tri);
+
+}  // namespace rt

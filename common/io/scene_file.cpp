@@ -1,0 +1,164 @@
+#include "io/scene_file.hpp"
+
+#include "io/json_locations.hpp"
+#include "io/scene_types.hpp"
+#include "render/integrators.hpp"
+
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <sstream>
+
+namespace rt {
+
+namespace {
+
+using nlohmann::json;
+
+Camera read_camera(const Fields& f) {
+    f.only({"projection", "eye", "target", "up", "fov", "window_height", "focal_distance"});
+    Camera cam;
+    const std::string projection = f.text("projection", "perspective");
+    if (projection == "orthographic") cam.projection = Projection::orthographic;
+    else if (projection != "perspective")
+        f.fail("projection", "must be \"perspective\" or \"orthographic\", not \"" + projection + "\"");
+    cam.eye = f.vec3("eye");
+    cam.target = f.vec3("target");
+    cam.up = f.vec3("up", cam.up);
+    cam.vertical_fov_degrees = f.positive("fov", cam.vertical_fov_degrees);
+    if (cam.vertical_fov_degrees >= 180) f.fail("fov", "must be less than 180 degrees");
+    cam.window_height = f.positive("window_height", cam.window_height);
+    cam.focal_distance = f.positive("focal_distance", cam.focal_distance);
+    try {
+        cam.validate();
+    } catch (const std::invalid_argument& e) {
+        f.fail("", e.what());
+    }
+    return cam;
+}
+
+Light read_light(const Fields& f) {
+    const std::string type = f.text("type");
+    for (const LightType& t : light_types()) {
+        if (type != t.name) continue;
+        std::vector<const char*> keys = {"type", "color"};
+        keys.insert(keys.end(), t.keys.begin(), t.keys.end());
+        f.only(keys);
+        Light light = t.read(f);
+        light.color = f.color("color", light.color);
+        return light;
+    }
+    f.fail("type", "unknown light type \"" + type + "\" (expected " + type_names(light_types()) + ")");
+}
+
+// The shape of one /surfaces entry, by its type's module.
+Shape read_shape(const Fields& f) {
+    const std::string type = f.text("type");
+    for (const SurfaceType& t : surface_types()) {
+        if (type != t.name) continue;
+        std::vector<const char*> keys = {"type", "name", "material"};
+        keys.insert(keys.end(), t.keys.begin(), t.keys.end());
+        f.only(keys);
+        try {
+            return t.read(f);
+        } catch (const std::invalid_argument& e) {  // degenerate geometry, a limit passed
+            f.fail("", e.what());
+        }
+    }
+    f.fail("type", "unknown surface type \"" + type + "\" (expected " + type_names(surface_types()) + ")");
+}
+
+json parse(const std::string& text, const std::string& filename) {
+    try {
+        return json::parse(text);
+    } catch (const json::parse_error& e) {
+        const TextPosition p = position_of(text, e.byte > 0 ? e.byte - 1 : 0);
+        std::string what = e.what();
+        const auto colon = what.rfind(": ");  // drop nlohmann's "[json.exception...] parse error at ..." prefix
+        if (colon != std::string::npos) what = what.substr(colon + 2);
+        throw SceneError(filename + ":" + std::to_string(p.line) + ":" + std::to_string(p.column) +
+                         ": not valid JSON: " + what);
+    }
+}
+
+}  // namespace
+
+Scene load_scene_text(const std::string& text, const std::string& filename, const std::string& base_dir,
+                      SceneSummary* summary_out) {
+    const json doc = parse(text, filename);
+    const JsonReader reader(text, filename, base_dir);
+    const Fields top(reader, doc, "");
+    top.only({"$schema", "description", "camera", "shading", "background", "ambient", "materials", "lights",
+              "surfaces"});
+    SceneSummary summary;
+    summary.from_file = true;
+    Scene scene;
+    scene.description = top.text("description", "");
+    if (!top.has("camera")) top.fail("", "missing key 'camera'");
+    scene.camera = read_camera(Fields(reader, doc["camera"], "/camera"));
+    const std::string shading = top.text("shading", "phong");
+    scene.integrator = make_integrator(shading);
+    if (!scene.integrator)
+        top.fail("shading", "unknown shading \"" + shading + "\" (expected phong, normal, barycentric or direction)");
+    scene.background = top.color("background", scene.background);
+    scene.ambient = top.color("ambient", scene.ambient);
+
+    // Materials by name; only those a surface uses are kept, numbered from 1 (0 is the default).
+    std::map<std::string, Material> materials;
+    if (top.has("materials")) {
+        const Fields ms(reader, doc["materials"], "/materials");
+        for (const auto& [name, m] : doc["materials"].items())
+            materials.emplace(name, read_material(Fields(reader, m, "/materials/" + name)));
+    }
+    if (top.has("lights")) {
+        const json& ls = doc["lights"];
+        if (!ls.is_array()) top.fail("lights", "must be an array");
+        for (std::size_t i = 0; i < ls.size(); ++i)
+            scene.lights.push_back(read_light(Fields(reader, ls[i], "/lights/" + std::to_string(i))));
+    }
+    summary.lights_black = scene.drop_unused_lights();
+    summary.lights = int(scene.lights.size());
+
+    if (!top.has("surfaces")) top.fail("", "missing key 'surfaces'");
+    const json& ss = doc["surfaces"];
+    if (!ss.is_array()) top.fail("surfaces", "must be an array");
+    std::map<std::string, MaterialId> used;
+    for (std::size_t i = 0; i < ss.size(); ++i) {
+        const Fields f(reader, ss[i], "/surfaces/" + std::to_string(i));
+        Shape shape = read_shape(f);
+        if (const auto* mesh = std::get_if<Mesh>(&shape)) {
+            summary.triangles += mesh->data().triangles.size();
+            summary.degenerate_triangles += mesh->dropped_degenerate();
+        } else if (std::holds_alternative<Triangle>(shape)) {
+            summary.triangles += 1;
+        }
+        MaterialId material = 0;
+        if (f.has("material")) {
+            const std::string name = f.text("material");
+            auto it = materials.find(name);
+            if (it == materials.end()) f.fail("material", "no material named \"" + name + "\" in /materials");
+            auto [slot, added] = used.emplace(name, 0);
+            if (added) slot->second = scene.add_material(it->second);
+            material = slot->second;
+        }
+        scene.surfaces.add(std::move(shape), material, f.text("name", ""));
+    }
+    summary.surfaces = int(ss.size());
+    summary.materials = int(used.size());
+    summary.materials_unused = int(materials.size() - used.size());
+    if (summary_out) *summary_out = summary;
+    return scene;
+}
+
+Scene load_scene_file(const std::string& path, SceneSummary* summary) {
+    std::ifstream in(path, std::ios::binary);
+    if (!in) throw SceneError(path + ": cannot open scene file");
+    std::ostringstream text;
+    text << in.rdbuf();
+    const std::string dir = std::filesystem::path(path).parent_path().string();
+    return load_scene_text(text.str(), path, dir.empty() ? "." : dir, summary);
+}
+
+}  // namespace rt

@@ -1,0 +1,27 @@
+#pragma once
+// JSON scene files (book appendix A). Every chapter executable takes one as --scene FILE.json.
+#include "io/json_reader.hpp"
+#include "render/scene.hpp"
+
+#include <string>
+
+namespace rt {
+
+// What loading kept and what it left out, for --stats.
+struct SceneSummary {
+    bool from_file = false;
+    int surfaces = 0;
+    int materials = 0;
+    int materials_unused = 0;  // defined but used by no surface: not kept
+    int lights = 0;
+    int lights_black = 0;  // colour (0,0,0): dropped, never evaluated
+    std::uint64_t triangles = 0;
+    std::uint64_t degenerate_triangles = 0;  // zero-area mesh triangles: dropped
+};
+
+// Throws SceneError. Relative mesh paths are relative to the scene file's directory.
+Scene load_scene_file(const std::string& path, SceneSummary* summary = nullptr);
+Scene load_scene_text(const std::string& text, const std::string& filename, const std::string& base_dir,
+                      SceneSummary* summary = nullptr);
+
+}  // namespace rt

@@ -1,0 +1,12 @@
+// {"type": "cube", "center": [x, y, z], "size": s, "subdivisions": n}
+#include "geometry/procedural.hpp"
+#include "io/scene_types.hpp"
+
+namespace rt {
+
+Shape read_cube(const Fields& f) {
+    return Mesh(subdivided_cube(f.vec3("center"), f.positive("size"),
+                                f.integer("subdivisions", limits::cube_subdivisions, 1)));
+}
+
+}  // namespace rt

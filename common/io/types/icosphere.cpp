@@ -1,0 +1,12 @@
+// {"type": "icosphere", "center": [x, y, z], "radius": R, "subdivisions": n}
+#include "geometry/procedural.hpp"
+#include "io/scene_types.hpp"
+
+namespace rt {
+
+Shape read_icosphere(const Fields& f) {
+    return Mesh(icosphere(f.vec3("center"), f.positive("radius"),
+                          f.integer("subdivisions", limits::icosphere_subdivisions, 2)));
+}
+
+}  // namespace rt

@@ -1,0 +1,12 @@
+// {"type": "terrain", "center": [x, y, z], "size": s, "height": h, "cells": n}
+#include "geometry/procedural.hpp"
+#include "io/scene_types.hpp"
+
+namespace rt {
+
+Shape read_terrain(const Fields& f) {
+    return Mesh(terrain(f.vec3("center"), f.positive("size"), f.number("height"),
+                        f.integer("cells", limits::terrain_cells, 64)));
+}
+
+}  // namespace rt

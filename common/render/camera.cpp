@@ -1,0 +1,49 @@
+#include "render/camera.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace rt {
+
+Ray View::ray(const CameraSample& sample) const {
+    const Vec2 uv = window_point(sample.film.x, sample.film.y, nx, ny, window);
+    Ray r = projection == Projection::orthographic ? orthographic_ray(eye, uvw, uv)
+                                                   : perspective_ray(eye, uvw, focal_distance, uv);
+    r.time = sample.time;
+    return r;
+}
+
+void Camera::validate() const {
+    const Vec3 view_direction = target - eye;
+    if (!(glm::dot(view_direction, view_direction) > 0))
+        throw std::invalid_argument("camera: eye and target are the same point");
+    if (!(glm::length(glm::cross(glm::normalize(view_direction), glm::normalize(up))) > Real(1e-6)))
+        throw std::invalid_argument("camera: up is parallel to the view direction");
+    if (projection == Projection::perspective && !(vertical_fov_degrees > 0 && vertical_fov_degrees < 180))
+        throw std::invalid_argument("camera: vertical field of view must be in (0, 180) degrees");
+    if (projection == Projection::orthographic && !(window_height > 0))
+        throw std::invalid_argument("camera: orthographic window height must be > 0");
+}
+
+View Camera::view(int nx, int ny) const {
+    validate();
+    const Vec3 view_direction = target - eye;
+    const Real aspect = Real(nx) / Real(ny);
+    Real half_height;
+    if (projection == Projection::perspective) {
+        const Real half_angle = glm::radians(vertical_fov_degrees) / Real(2);
+        half_height = focal_distance * std::tan(half_angle);
+    } else {
+        half_height = window_height / Real(2);
+    }
+    const Real half_width = half_height * aspect;
+    return View{projection,
+                eye,
+                camera_basis(view_direction, up),
+                Window{-half_width, half_width, -half_height, half_height},
+                focal_distance,
+                nx,
+                ny};
+}
+
+}  // namespace rt

@@ -1,0 +1,135 @@
+#include "render/render.hpp"
+
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <algorithm>
+#include <atomic>
+#include <chrono>
+#include <cstdio>
+#include <mutex>
+#include <stdexcept>
+
+namespace rt {
+
+namespace {
+
+constexpr int kTile = 16;
+
+// A terminal progress bar, drawn by whichever worker finishes a tile once enough time has
+// passed. Quiet for renders that finish within a second.
+class Progress {
+public:
+    Progress(bool enabled, int total) : enabled_(enabled), total_(total), start_(Clock::now()) {}
+    void tile_done() {
+        const int done = ++done_;
+        if (!enabled_) return;
+        const double t = seconds();
+        if (t < 1.0 && !shown_) return;
+        std::unique_lock lock(mutex_, std::try_to_lock);
+        if (!lock || (t - last_ < 0.1 && done < total_)) return;
+        last_ = t;
+        shown_ = true;
+        const int width = 40, filled = width * done / total_;
+        std::fprintf(stderr, "\r[%.*s%*s] %3d%% %6.1fs", filled, "########################################",
+                     width - filled, "", 100 * done / total_, t);
+        std::fflush(stderr);
+    }
+    void finish() {
+        if (shown_) std::fputc('\n', stderr);
+    }
+    double seconds() const { return std::chrono::duration<double>(Clock::now() - start_).count(); }
+
+private:
+    using Clock = std::chrono::steady_clock;
+    bool enabled_;
+    int total_;
+    Clock::time_point start_;
+    std::atomic<int> done_{0};
+    std::mutex mutex_;
+    double last_ = -1;
+    std::atomic<bool> shown_{false};
+};
+
+void check(const Scene& scene, const RenderOptions& o) {
+    if (o.width < 1 || o.height < 1) throw std::invalid_argument("image size must be at least 1x1");
+    if (o.spp < 1) throw std::invalid_argument("spp must be at least 1");
+    if (!scene.integrator) throw std::invalid_argument("scene '" + scene.name + "' has no integrator");
+}
+
+}  // namespace
+
+CameraSample camera_sample(int i, int j, int spp, Sampler& sampler) {
+    if (spp == 1) return {Vec2(Real(i) + Real(0.5), Real(j) + Real(0.5))};
+    return {Vec2(Real(i), Real(j)) + sampler.get2(Dimension::pixel)};
+}
+
+RenderResult render(const Scene& scene, const RenderOptions& o) {
+    check(scene, o);
+    const View view = scene.camera.view(o.width, o.height);
+    const int tiles_x = (o.width + kTile - 1) / kTile;
+    const int tiles_y = (o.height + kTile - 1) / kTile;
+    const int tiles = tiles_x * tiles_y;
+
+    const Integrator& integrator = *scene.integrator;
+    RenderResult result;
+    result.image = Image(o.width, o.height);
+    Progress progress(o.progress, tiles);
+    std::mutex counters_mutex;
+
+    auto render_tile = [&](int tile) {
+        RayCounters counters;
+        const int x0 = (tile % tiles_x) * kTile, y0 = (tile / tiles_x) * kTile;
+        const int x1 = std::min(x0 + kTile, o.width), y1 = std::min(y0 + kTile, o.height);
+        for (int y = y0; y < y1; ++y) {
+            const int j = o.height - 1 - y;  // image rows go down, v goes up
+            for (int i = x0; i < x1; ++i) {
+                Sampler sampler(o.seed, std::uint64_t(y) * std::uint64_t(o.width) + std::uint64_t(i));
+                Color sum(0);
+                for (int k = 0; k < o.spp; ++k) {
+                    sampler.start_sample(k);
+                    const Ray ray = view.ray(camera_sample(i, j, o.spp, sampler));
+                    counters.count(RayKind::camera);
+                    TraceContext context{sampler, counters};
+                    sum += integrator.Li(scene, ray, context);
+                }
+                result.image.at(i, y) = sum / float(o.spp);
+            }
+        }
+        {
+            std::lock_guard lock(counters_mutex);
+            result.counters += counters;
+        }
+        progress.tile_done();
+    };
+
+    const int threads = o.threads > 0 ? o.threads : tbb::this_task_arena::max_concurrency();
+    tbb::task_arena arena(threads);
+    arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1),
+                          [&](const tbb::blocked_range<int>& r) {
+                              for (int t = r.begin(); t != r.end(); ++t) render_tile(t);
+                          },
+                          tbb::simple_partitioner());
+    });
+    progress.finish();
+    result.seconds = progress.seconds();
+    result.threads = threads;
+    return result;
+}
+
+Pick pick(const Scene& scene, const RenderOptions& o, int x, int y) {
+    check(scene, o);
+    if (x < 0 || x >= o.width || y < 0 || y >= o.height)
+        throw std::invalid_argument("pick: pixel " + std::to_string(x) + "," + std::to_string(y) +
+                                    " is outside the " + std::to_string(o.width) + "x" +
+                                    std::to_string(o.height) + " image");
+    const View view = scene.camera.view(o.width, o.height);
+    Pick result{view.pixel_ray(x, o.height - 1 - y), std::nullopt};
+    HitRecord rec;
+    if (scene.hit(result.ray, Interval{}, rec)) result.hit = rec;
+    return result;
+}
+
+}  // namespace rt

@@ -1,0 +1,44 @@
+#pragma once
+#include "render/image.hpp"
+#include "render/scene.hpp"
+
+#include <cstdint>
+#include <optional>
+
+namespace rt {
+
+struct RenderOptions {
+    int width = 400;
+    int height = 300;
+    int spp = 1;             // samples per pixel; 1 = the pixel centre, as in §9.2
+    std::uint64_t seed = 0;  // selects every pixel's random stream
+    int threads = 0;         // 0 = all cores
+    bool progress = false;   // progress bar on stderr
+};
+
+struct RenderResult {
+    Image image;
+    RayCounters counters;
+    double seconds = 0;
+    int threads = 0;  // worker threads actually used
+};
+
+// The one render loop: square tiles spread over the cores by TBB, each pixel with its own
+// sampler. Exceptions from the integrator (an unfinished exercise) reach the caller.
+RenderResult render(const Scene& scene, const RenderOptions& options);
+
+// The camera sample of pixel (i, j) (j up from the bottom). One sample per pixel lands on
+// the pixel centre, as in course §9.2; more are spread uniformly at random over the pixel,
+// from the sampler's pixel dimension. Lens and time stay at the pinhole and time 0 until a
+// camera asks for them.
+CameraSample camera_sample(int i, int j, int spp, Sampler& sampler);
+
+// What the ray through the centre of image pixel (x, y) (y down from the top, as image
+// viewers count) sees: the picking use of ray tracing from the course's FAQ.
+struct Pick {
+    Ray ray;
+    std::optional<HitRecord> hit;
+};
+Pick pick(const Scene& scene, const RenderOptions& options, int x, int y);
+
+}  // namespace rt

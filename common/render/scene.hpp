@@ -1,0 +1,52 @@
+#pragma once
+// Everything a render needs: what is seen (surfaces, materials, lights), from where
+// (camera) and how it is shaded (integrator).
+#include "accel/surface_list.hpp"
+#include "render/camera.hpp"
+#include "render/integrator.hpp"
+#include "shading/light.hpp"
+#include "shading/material.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace rt {
+
+struct Scene {
+    std::string name;
+    std::string description;
+    Camera camera;
+    SurfaceList surfaces;
+    std::vector<Material> materials{Material{}};  // materials[0]: the default, for surfaces given none
+    std::vector<Light> lights;                    // only lights that can contribute: see drop_unused_lights()
+    Color background{0};
+    Color ambient{0};  // c_a: ambient light, seen by every surface's diffuse colour
+    std::shared_ptr<const Integrator> integrator;
+
+    MaterialId add_material(const Material& m) {
+        materials.push_back(m);
+        return MaterialId(materials.size() - 1);
+    }
+    const Material& material(MaterialId id) const { return materials[id]; }
+
+    // What a scene does not use costs nothing per ray: lights that are black are removed
+    // here, once, instead of being looked at for every shading point. Returns how many.
+    int drop_unused_lights();
+
+    // The two queries every integrator asks: the closest hit, and whether anything at all is
+    // in the way (shadow rays).
+    bool hit(const Ray& ray, Interval interval, HitRecord& rec) const { return surfaces.hit(ray, interval, rec); }
+    bool occluded(const Ray& ray, Interval interval) const { return surfaces.occluded(ray, interval); }
+};
+
+// The dark grey behind the pictures of geometry (chapters 02-04): not black, so a black
+// surface would still show.
+inline const Color kPictureBackground{0.1f, 0.1f, 0.12f};
+
+// A scene seen from `eye` towards `target` with a perspective camera of the given vertical
+// field of view, shaded by `integrator`, against the picture background; no surfaces yet.
+Scene look_at(const Vec3& eye, const Vec3& target, Real vertical_fov_degrees,
+              std::shared_ptr<const Integrator> integrator);
+
+}  // namespace rt
