@@ -1,8 +1,9 @@
 // STUDENT COPY of solutions/ch02_spheres.cpp, made by tools/gen_exercises.cpp.
 // Write your code between each "@exercise" line and its "@end", in place of the throw.
-// Chapter 02 exercises: ray-sphere intersection (§9.3.1). Declared in common/sphere.hpp.
-#include "common/exercise.hpp"
-#include "common/sphere.hpp"
+// Chapter 02 exercises: ray-sphere intersection (book §2, course §9.3.1). Declared in
+// common/geometry/sphere.hpp.
+#include "core/exercise.hpp"
+#include "geometry/sphere.hpp"
 
 #include <cmath>
 
@@ -26,9 +27,9 @@ bool sphere_roots(const Ray& ray, const Vec3& center, Real radius, Real& t_near,
 // @book-end
 
 // @book hit
-bool Sphere::hit(const Ray& ray, Real t0, Real t1, HitRecord& rec) const {
-    // @exercise 2.3 | Sphere::hit | book §2.4
-    throw NotImplemented("exercise 2.3 (Sphere::hit) is not done yet: see book §2.4");
+bool hit(const Sphere& sphere, const Ray& ray, Interval interval, SphereHit& result) {
+    // @exercise 2.3 | hit(Sphere) | book §2.4
+    throw NotImplemented("exercise 2.3 (hit(Sphere)) is not done yet: see book §2.4");
     // @end
 }
 // @book-end

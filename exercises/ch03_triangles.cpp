@@ -1,8 +1,9 @@
 // STUDENT COPY of solutions/ch03_triangles.cpp, made by tools/gen_exercises.cpp.
 // Write your code between each "@exercise" line and its "@end", in place of the throw.
-// Chapter 03 exercises: ray-triangle intersection (§9.3.2). Declared in common/triangle.hpp.
-#include "common/exercise.hpp"
-#include "common/triangle.hpp"
+// Chapter 03 exercises: ray-triangle intersection (book §3, course §9.3.2). Declared in
+// common/geometry/triangle.hpp.
+#include "core/exercise.hpp"
+#include "geometry/triangle.hpp"
 
 #include <cmath>
 #include <type_traits>
@@ -11,8 +12,8 @@
 namespace rt {
 
 // @book cramer
-bool ray_triangle(const Ray& ray, const Vec3& A, const Vec3& B, const Vec3& C, Real t0, Real t1,
-                  TriangleHit& hit) {
+bool ray_triangle(const Ray& ray, const Vec3& A, const Vec3& B, const Vec3& C, Interval interval,
+                  TriangleHit& result) {
     // @exercise 3.1 | ray_triangle | book §3.2
     throw NotImplemented("exercise 3.1 (ray_triangle) is not done yet: see book §3.2");
     // @end
@@ -20,8 +21,8 @@ bool ray_triangle(const Ray& ray, const Vec3& A, const Vec3& B, const Vec3& C, R
 // @book-end
 
 // @book watertight
-bool ray_triangle_watertight(const Ray& ray, const Vec3& A, const Vec3& B, const Vec3& C, Real t0, Real t1,
-                             TriangleHit& hit) {
+bool ray_triangle_watertight(const Ray& ray, const Vec3& A, const Vec3& B, const Vec3& C, Interval interval,
+                             TriangleHit& result) {
     // @exercise 3.2 | ray_triangle_watertight | book §3.4
     throw NotImplemented("exercise 3.2 (ray_triangle_watertight) is not done yet: see book §3.4");
     // @end

@@ -1,8 +1,9 @@
 // STUDENT COPY of solutions/ch04_polygons.cpp, made by tools/gen_exercises.cpp.
 // Write your code between each "@exercise" line and its "@end", in place of the throw.
-// Chapter 04 exercises: ray-polygon intersection (§9.3.3). Declared in common/polygon.hpp.
-#include "common/exercise.hpp"
-#include "common/polygon.hpp"
+// Chapter 04 exercises: ray-polygon intersection (book §4, course §9.3.3). Declared in
+// common/geometry/polygon.hpp.
+#include "core/exercise.hpp"
+#include "geometry/polygon.hpp"
 
 #include <cmath>
 
@@ -25,9 +26,9 @@ bool inside_polygon_2d(const std::vector<Vec2>& polygon, const Vec2& p) {
 // @book-end
 
 // @book polygon-hit
-bool Polygon::hit(const Ray& ray, Real t0, Real t1, HitRecord& rec) const {
-    // @exercise 4.3 | Polygon::hit | book §4.4
-    throw NotImplemented("exercise 4.3 (Polygon::hit) is not done yet: see book §4.4");
+bool hit(const Polygon& polygon, const Ray& ray, Interval interval, PolygonHit& result) {
+    // @exercise 4.3 | hit(Polygon) | book §4.4
+    throw NotImplemented("exercise 4.3 (hit(Polygon)) is not done yet: see book §4.4");
     // @end
 }
 // @book-end

@@ -1,17 +1,17 @@
 // STUDENT COPY of solutions/ch05_ray_tracing_program.cpp, made by tools/gen_exercises.cpp.
 // Write your code between each "@exercise" line and its "@end", in place of the throw.
-// Chapter 05 exercises: the ray tracing program (§9.4-9.4.1). Declared in
-// common/surface_list.hpp and common/shading.hpp.
-#include "common/exercise.hpp"
-#include "common/shading.hpp"
-#include "common/surface_list.hpp"
+// Chapter 05 exercises: the ray tracing program (book §5, course §9.4-9.4.1). Declared in
+// common/accel/surface_list.hpp and common/shading/shading.hpp.
+#include "core/exercise.hpp"
+#include "shading/shading.hpp"
+#include "accel/surface_list.hpp"
 
 #include <cmath>
 
 namespace rt {
 
 // @book closest
-bool SurfaceList::hit(const Ray& ray, Real t0, Real t1, HitRecord& rec) const {
+bool SurfaceList::hit(const Ray& ray, Interval interval, HitRecord& rec) const {
     // @exercise 5.1 | SurfaceList::hit | book §5.2
     throw NotImplemented("exercise 5.1 (SurfaceList::hit) is not done yet: see book §5.2");
     // @end

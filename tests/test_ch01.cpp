@@ -97,8 +97,8 @@ TEST_CASE("View: the field of view is the angle the rays actually span (analytic
         cam.vertical_fov_degrees = fov;
         const View v = cam.view(640, 360);
         const Vec3 ahead = glm::normalize(cam.target - cam.eye);
-        const Vec3 top = glm::normalize(v.ray(320, 360).direction);
-        const Vec3 side = glm::normalize(v.ray(640, 180).direction);
+        const Vec3 top = glm::normalize(v.ray({Vec2(320, 360)}).direction);
+        const Vec3 side = glm::normalize(v.ray({Vec2(640, 180)}).direction);
         CAPTURE(fov);
         CHECK(std::acos(glm::dot(top, ahead)) == doctest::Approx(glm::radians(fov) / 2).epsilon(1e-5));
         // Square pixels: tan(horizontal half angle) = aspect * tan(vertical half angle).

@@ -86,45 +86,65 @@ TEST_CASE("2.1/2.2 a miss, a tangent and a non-unit direction") {
     CHECK(tf == doctest::Approx(2.5).epsilon(4 * kEps));
 }
 
-TEST_CASE("2.3 Sphere::hit takes the first root inside [t0, t1]") {
-    const Sphere s("ball", Vec3(0, 0, -5), 1);  // roots 4 and 6 along -z from the origin
+TEST_CASE("2.3 hit(Sphere) takes the first root inside the interval") {
+    const Sphere s(Vec3(0, 0, -5), 1);  // roots 4 and 6 along -z from the origin
     const Ray r{Vec3(0), Vec3(0, 0, -1)};
-    HitRecord rec;
-    REQUIRE(s.hit(r, 0, kInfinity, rec));
-    CHECK(rec.t == doctest::Approx(4));
-    CHECK(rec.surface == &s);
+    SphereHit h{-1};
+    REQUIRE(hit(s, r, Interval{0, kInfinity}, h));
+    CHECK(h.t == doctest::Approx(4));
+    REQUIRE(hit(s, r, Interval{5, kInfinity}, h));  // min past the near root: the far one
+    CHECK(h.t == doctest::Approx(6));
+    REQUIRE(hit(s, r, Interval{4, 4}, h));  // both ends are in the interval
+    CHECK(h.t == doctest::Approx(4));
+
+    // A miss leaves the result alone: the library may pass in the best hit so far.
+    SphereHit untouched{-1};
+    CHECK_FALSE(hit(s, r, Interval{0, 3.5}, untouched));          // both roots past max
+    CHECK_FALSE(hit(s, r, Interval{6.5, kInfinity}, untouched));  // both roots before min
+    CHECK_FALSE(hit(s, Ray{Vec3(0), Vec3(0, 0, 1)}, Interval{}, untouched));  // sphere behind the eye
+    CHECK_FALSE(hit(s, Ray{Vec3(0, 3, 0), Vec3(0, 0, -1)}, Interval{}, untouched));  // passes above it
+    CHECK(untouched.t == -1);
+
+    // The record the library builds from that t.
+    const HitRecord rec = record(s, r, SphereHit{4}, SurfaceRef{7, 3});
+    CHECK(rec.t == 4);
     CHECK(rec.p == Vec3(0, 0, -4));
     CHECK(rec.normal == Vec3(0, 0, 1));  // unit, pointing out, towards the eye
+    CHECK(rec.surface == 7);
+    CHECK(rec.material == 3);
     CHECK_FALSE(rec.has_barycentrics);
+    CHECK(record(s, r, SphereHit{6}).normal == Vec3(0, 0, -1));  // still pointing out of the sphere
+}
 
-    HitRecord far;
-    REQUIRE(s.hit(r, 5, kInfinity, far));  // t0 past the near root: the far one
-    CHECK(far.t == doctest::Approx(6));
-    CHECK(far.normal == Vec3(0, 0, -1));  // still pointing out of the sphere
-
-    HitRecord none;
-    CHECK_FALSE(s.hit(r, 0, 3.5, none));  // both roots past t1
-    CHECK_FALSE(s.hit(r, 6.5, kInfinity, none));  // both roots before t0
-    CHECK_FALSE(s.hit(Ray{Vec3(0), Vec3(0, 0, 1)}, 0, kInfinity, none));  // sphere behind the eye
-    CHECK(none.surface == nullptr);  // a miss leaves the record alone
+TEST_CASE("2.3 the eye inside the sphere sees the far root") {
+    const Sphere s(Vec3(0), 4);
+    SphereHit h{-1};
+    REQUIRE(hit(s, Ray{Vec3(1, 0, 0), Vec3(0, 0, -2)}, Interval{}, h));
+    CHECK(h.t == doctest::Approx(std::sqrt(15.0) / 2));
 }
 
 TEST_CASE("2.3 hit points lie on the sphere and normals are unit length") {
-    const Sphere s("ball", Vec3(1, -2, 3), 0.75);
+    const Sphere s(Vec3(1, -2, 3), 0.75);
     pcg32 rng(3);
     std::uniform_real_distribution<double> unit(-1, 1);
-    int hits = 0;
+    int hits = 0, bad = 0;
     for (int k = 0; k < 2000; ++k) {
         const Vec3 origin(Real(4 * unit(rng)), Real(4 * unit(rng)), 10);
-        const Vec3 aim = s.center() + Vec3(Real(unit(rng)), Real(unit(rng)), Real(unit(rng)));
+        const Vec3 aim = s.center + Vec3(Real(unit(rng)), Real(unit(rng)), Real(unit(rng)));
         const Ray r{origin, aim - origin};
         HitRecord rec;
-        if (!s.hit(r, 0, kInfinity, rec)) continue;
+        if (!hit_record(s, r, Interval{}, SurfaceRef{}, rec)) continue;
         ++hits;
-        CHECK(std::abs(glm::length(rec.normal) - 1) < 4 * kEps);
-        CHECK(std::abs(glm::length(rec.p - s.center()) - s.radius()) < 8 * kEps);
-        CHECK(glm::dot(rec.normal, r.direction) < 0);  // seen from outside: facing the eye
+        const bool ok = std::abs(glm::length(rec.normal) - 1) < 4 * kEps &&
+                        std::abs(glm::length(rec.p - s.center) - s.radius) < 8 * kEps &&
+                        glm::dot(rec.normal, r.direction) < 0;  // seen from outside: facing the eye
+        if (!ok && bad++ == 0) {
+            CAPTURE(origin);
+            CAPTURE(r.direction);
+            CHECK(ok);
+        }
     }
+    CHECK(bad == 0);
     CHECK(hits > 500);
 }
 
@@ -198,7 +218,7 @@ TEST_CASE("analytic: an orthographic sphere covers pi R^2 of the window") {
     scene.camera.target = Vec3(0);
     scene.camera.window_height = 4;
     const Real R = 1.3;
-    scene.world = std::make_shared<Sphere>("s", Vec3(0), R);
+    scene.surfaces.add(Sphere(Vec3(0), R));
     scene.background = Color(0);
     scene.integrator = std::make_shared<NormalIntegrator>();
     RenderOptions o;

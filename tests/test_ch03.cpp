@@ -2,6 +2,7 @@
 #include "support/leaks.hpp"
 #include "geometry/mesh.hpp"
 #include "geometry/procedural.hpp"
+#include "geometry/shape.hpp"
 #include "geometry/triangle.hpp"
 #include "support.hpp"
 
@@ -16,7 +17,7 @@ using rt::test::kEps;
 namespace {
 
 // Both exercises, through one signature.
-using TriangleFn = bool (*)(const Ray&, const Vec3&, const Vec3&, const Vec3&, Real, Real, TriangleHit&);
+using TriangleFn = bool (*)(const Ray&, const Vec3&, const Vec3&, const Vec3&, Interval, TriangleHit&);
 const std::pair<const char*, TriangleFn> kForms[] = {{"3.1 Cramer", ray_triangle},
                                                      {"3.2 watertight", ray_triangle_watertight}};
 
@@ -28,7 +29,7 @@ TEST_CASE("course exercise 2: (1,1,1) + t(-1,-1,-1) hits the triangle at t = 2/3
     for (const auto& [form, fn] : kForms) {
         CAPTURE(form);
         TriangleHit h{};
-        REQUIRE(fn(Ray{Vec3(1, 1, 1), Vec3(-1, -1, -1)}, Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), 0, kInfinity, h));
+        REQUIRE(fn(Ray{Vec3(1, 1, 1), Vec3(-1, -1, -1)}, Vec3(1, 0, 0), Vec3(0, 1, 0), Vec3(0, 0, 1), Interval{}, h));
         CHECK(h.t == doctest::Approx(Real(2) / 3).epsilon(4 * kEps));
         CHECK(h.beta == doctest::Approx(Real(1) / 3).epsilon(4 * kEps));
         CHECK(h.gamma == doctest::Approx(Real(1) / 3).epsilon(4 * kEps));
@@ -41,20 +42,20 @@ TEST_CASE("3.1/3.2 misses, the interval, parallel rays and non-unit directions")
         CAPTURE(form);
         TriangleHit h{};
         // Beside the triangle (beta + gamma > 1), and behind the origin.
-        CHECK_FALSE(fn(Ray{Vec3(1.5, 1.5, 1), Vec3(0, 0, -1)}, a, b, c, 0, kInfinity, h));
-        CHECK_FALSE(fn(Ray{Vec3(0.5, 0.5, -1), Vec3(0, 0, -1)}, a, b, c, 0, kInfinity, h));
-        // Inside, at t = 4 with |d| = 0.25: only when 4 is in [t0, t1].
+        CHECK_FALSE(fn(Ray{Vec3(1.5, 1.5, 1), Vec3(0, 0, -1)}, a, b, c, Interval{}, h));
+        CHECK_FALSE(fn(Ray{Vec3(0.5, 0.5, -1), Vec3(0, 0, -1)}, a, b, c, Interval{}, h));
+        // Inside, at t = 4 with |d| = 0.25: only when 4 is in the interval.
         const Ray r{Vec3(0.5, 0.25, 1), Vec3(0, 0, -0.25)};
-        REQUIRE(fn(r, a, b, c, 0, kInfinity, h));
+        REQUIRE(fn(r, a, b, c, Interval{}, h));
         CHECK(h.t == doctest::Approx(4).epsilon(4 * kEps));
         CHECK(h.beta == doctest::Approx(0.25).epsilon(4 * kEps));
         CHECK(h.gamma == doctest::Approx(0.125).epsilon(4 * kEps));
-        CHECK_FALSE(fn(r, a, b, c, 0, 3.9, h));
-        CHECK_FALSE(fn(r, a, b, c, 4.1, kInfinity, h));
+        CHECK_FALSE(fn(r, a, b, c, Interval{0, 3.9}, h));
+        CHECK_FALSE(fn(r, a, b, c, Interval{4.1, kInfinity}, h));
         // In the triangle's plane: parallel, no hit.
-        CHECK_FALSE(fn(Ray{Vec3(-1, 0.5, 0), Vec3(1, 0, 0)}, a, b, c, 0, kInfinity, h));
+        CHECK_FALSE(fn(Ray{Vec3(-1, 0.5, 0), Vec3(1, 0, 0)}, a, b, c, Interval{}, h));
         // Either side: no back-face culling.
-        REQUIRE(fn(Ray{Vec3(0.5, 0.25, -1), Vec3(0, 0, 1)}, a, b, c, 0, kInfinity, h));
+        REQUIRE(fn(Ray{Vec3(0.5, 0.25, -1), Vec3(0, 0, 1)}, a, b, c, Interval{}, h));
         CHECK(h.t == doctest::Approx(1).epsilon(4 * kEps));
     }
 }
@@ -68,7 +69,7 @@ TEST_CASE("3.1 and 3.2 agree on random rays") {
         const Vec3 a = rv(), b = rv(), c = rv();
         const Ray r{Vec3(0, 0, 3) + rv(), rv() - Vec3(0, 0, 3)};
         TriangleHit h1{}, h2{};
-        const bool x = ray_triangle(r, a, b, c, 0, kInfinity, h1), y = ray_triangle_watertight(r, a, b, c, 0, kInfinity, h2);
+        const bool x = ray_triangle(r, a, b, c, Interval{}, h1), y = ray_triangle_watertight(r, a, b, c, Interval{}, h2);
         if (x != y) {  // allowed only within rounding of an edge
             disagree += std::min({h1.beta, h1.gamma, 1 - h1.beta - h1.gamma, h2.beta, h2.gamma, 1 - h2.beta - h2.gamma}) < -1e-3;
             continue;
@@ -83,26 +84,33 @@ TEST_CASE("3.1 and 3.2 agree on random rays") {
     CHECK(disagree == 0);
 }
 
-TEST_CASE("Triangle and TriangleMesh fill the record: barycentrics, unit normal, closest triangle") {
-    const Triangle t("t", Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0));
+TEST_CASE("Triangle and Mesh records: barycentrics, unit normal, closest triangle") {
+    const Triangle t(Vec3(0, 0, 0), Vec3(1, 0, 0), Vec3(0, 1, 0));
     HitRecord rec;
-    REQUIRE(t.hit(Ray{Vec3(0.25, 0.5, 2), Vec3(0, 0, -1)}, 0, kInfinity, rec));
+    REQUIRE(hit_record(t, Ray{Vec3(0.25, 0.5, 2), Vec3(0, 0, -1)}, Interval{}, SurfaceRef{2, 1}, rec));
     CHECK(rec.has_barycentrics);
     CHECK(rec.beta == doctest::Approx(0.25));
     CHECK(rec.gamma == doctest::Approx(0.5));
     CHECK(rec.normal == Vec3(0, 0, 1));  // counter-clockwise seen from +z
     CHECK(rec.p == Vec3(0.25, 0.5, 0));
+    CHECK(rec.surface == 2);
+    CHECK(rec.material == 1);
+    CHECK(rec.primitive == kNone);  // a lone triangle is not part of a mesh
     // Two parallel triangles in one mesh: the nearer one wins whatever their order.
     MeshData m;
     m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}, {1, 0, 1}, {0, 1, 1}};
     m.triangles = {{0, 1, 2}, {3, 4, 5}};
-    const TriangleMesh mesh("m", m);
-    REQUIRE(mesh.hit(Ray{Vec3(0.2, 0.2, 5), Vec3(0, 0, -1)}, 0, kInfinity, rec));
+    const Mesh mesh(m);
+    REQUIRE(hit_record(mesh, Ray{Vec3(0.2, 0.2, 5), Vec3(0, 0, -1)}, Interval{}, SurfaceRef{}, rec));
     CHECK(rec.t == doctest::Approx(4));
     CHECK(rec.primitive == 1);
-    REQUIRE(mesh.hit(Ray{Vec3(0.2, 0.2, -5), Vec3(0, 0, 1)}, 0, kInfinity, rec));
+    REQUIRE(hit_record(mesh, Ray{Vec3(0.2, 0.2, -5), Vec3(0, 0, 1)}, Interval{}, SurfaceRef{}, rec));
     CHECK(rec.t == doctest::Approx(5));
     CHECK(rec.primitive == 0);
+    // Any hit: both triangles are in the way of a ray through them, neither past max.
+    CHECK(occluded(mesh, Ray{Vec3(0.2, 0.2, 5), Vec3(0, 0, -1)}, Interval{}));
+    CHECK_FALSE(occluded(mesh, Ray{Vec3(0.2, 0.2, 5), Vec3(0, 0, -1)}, Interval{0, 3.9}));
+    CHECK_FALSE(occluded(mesh, Ray{Vec3(0.9, 0.9, 5), Vec3(0, 0, -1)}, Interval{}));
 }
 
 TEST_CASE("watertightness: 10^6 rays at shared edges and vertices, zero leaks for 3.2") {

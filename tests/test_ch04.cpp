@@ -109,26 +109,32 @@ TEST_CASE("4.2 the boundary rule: each point of a shared edge belongs to exactly
         }
 }
 
-TEST_CASE("4.3 Polygon::hit for polygons facing along each axis") {
-    const Polygon px("x", {{1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {1, 0, 1}});
-    const Polygon py("y", {{0, 2, 0}, {0, 2, 1}, {1, 2, 1}, {1, 2, 0}});
-    const Polygon pz("z", {{0, 0, -3}, {1, 0, -3}, {1, 1, -3}, {0, 1, -3}});
-    HitRecord rec;
-    REQUIRE(px.hit(Ray{Vec3(5, 0.5, 0.5), Vec3(-2, 0, 0)}, 0, kInfinity, rec));
-    CHECK(rec.t == doctest::Approx(2));
+TEST_CASE("4.3 hit(Polygon) for polygons facing along each axis") {
+    const Polygon px({{1, 0, 0}, {1, 1, 0}, {1, 1, 1}, {1, 0, 1}});
+    const Polygon py({{0, 2, 0}, {0, 2, 1}, {1, 2, 1}, {1, 2, 0}});
+    const Polygon pz({{0, 0, -3}, {1, 0, -3}, {1, 1, -3}, {0, 1, -3}});
+    PolygonHit h{-1};
+    REQUIRE(hit(px, Ray{Vec3(5, 0.5, 0.5), Vec3(-2, 0, 0)}, Interval{}, h));
+    CHECK(h.t == doctest::Approx(2));
+    REQUIRE(hit(py, Ray{Vec3(0.5, 0, 0.5), Vec3(0, 1, 0)}, Interval{}, h));
+    CHECK(h.t == doctest::Approx(2));
+    REQUIRE(hit(pz, Ray{Vec3(0.5, 0.5, 0), Vec3(0, 0, -1)}, Interval{}, h));
+    CHECK(h.t == doctest::Approx(3));
+    REQUIRE(hit(pz, Ray{Vec3(0.5, 0.5, 0), Vec3(0, 0, -1)}, Interval{3, 3}, h));  // both ends count
+    // A miss leaves the result alone.
+    PolygonHit untouched{-1};
+    CHECK_FALSE(hit(pz, Ray{Vec3(1.5, 0.5, 0), Vec3(0, 0, -1)}, Interval{}, untouched));        // beside
+    CHECK_FALSE(hit(pz, Ray{Vec3(0.5, 0.5, 0), Vec3(0, 0, -1)}, Interval{0, 2.9}, untouched));  // past max
+    CHECK_FALSE(hit(pz, Ray{Vec3(0.5, 0.5, 0), Vec3(0, 0, 1)}, Interval{}, untouched));         // behind
+    CHECK_FALSE(hit(pz, Ray{Vec3(0.5, 0.5, 0), Vec3(1, 0, 0)}, Interval{}, untouched));         // parallel
+    CHECK(untouched.t == -1);
+    // The record the library builds.
+    const HitRecord rec = record(px, Ray{Vec3(5, 0.5, 0.5), Vec3(-2, 0, 0)}, PolygonHit{2}, SurfaceRef{4, 2});
+    CHECK(rec.p == Vec3(1, 0.5, 0.5));
     CHECK(std::abs(rec.normal.x) == doctest::Approx(1));
-    CHECK(rec.surface == &px);
-    REQUIRE(py.hit(Ray{Vec3(0.5, 0, 0.5), Vec3(0, 1, 0)}, 0, kInfinity, rec));
-    CHECK(rec.t == doctest::Approx(2));
-    CHECK(rec.p.y == doctest::Approx(2));
-    REQUIRE(pz.hit(Ray{Vec3(0.5, 0.5, 0), Vec3(0, 0, -1)}, 0, kInfinity, rec));
-    CHECK(rec.t == doctest::Approx(3));
-    CHECK(rec.normal == Vec3(0, 0, 1));  // counter-clockwise seen from +z
-    HitRecord none;
-    CHECK_FALSE(pz.hit(Ray{Vec3(1.5, 0.5, 0), Vec3(0, 0, -1)}, 0, kInfinity, none));  // beside
-    CHECK_FALSE(pz.hit(Ray{Vec3(0.5, 0.5, 0), Vec3(0, 0, -1)}, 0, 2.9, none));        // past t1
-    CHECK_FALSE(pz.hit(Ray{Vec3(0.5, 0.5, 0), Vec3(1, 0, 0)}, 0, kInfinity, none));   // parallel
-    CHECK(none.surface == nullptr);
+    CHECK(rec.surface == 4);
+    CHECK(rec.material == 2);
+    CHECK(record(pz, Ray{Vec3(0.5, 0.5, 0), Vec3(0, 0, -1)}, PolygonHit{3}).normal == Vec3(0, 0, 1));  // ccw from +z
 }
 
 TEST_CASE("stress: random regular polygons at scales 1e-3 to 1e3") {
@@ -147,7 +153,7 @@ TEST_CASE("stress: random regular polygons at scales 1e-3 to 1e3") {
                 const double t = 2 * M_PI * i / n;
                 v.push_back(center + Real(scale) * (Real(std::cos(t)) * a + Real(std::sin(t)) * b));
             }
-            const Polygon poly("p", v);
+            const Polygon poly(v);
             const Real inradius = Real(scale * std::cos(M_PI / n));
             for (int s = 0; s < 10; ++s) {
                 const double t = 2 * M_PI * u(rng);
@@ -155,10 +161,10 @@ TEST_CASE("stress: random regular polygons at scales 1e-3 to 1e3") {
                 const Vec3 in = center + Real(0.99) * inradius * Real(u(rng)) * dir2;
                 const Vec3 out = center + Real(1.01 * scale) * dir2;
                 const Vec3 eye = center + Real(3 * scale) * (axis + Real(0.3) * a);
-                HitRecord rec;
-                CHECK(poly.hit(Ray{eye, in - eye}, 0, kInfinity, rec));
-                CHECK(rec.t == doctest::Approx(1).epsilon(1e3 * kEps));
-                CHECK_FALSE(poly.hit(Ray{eye, out - eye}, 0, kInfinity, rec));
+                PolygonHit h{-1};
+                CHECK(hit(poly, Ray{eye, in - eye}, Interval{}, h));
+                CHECK(h.t == doctest::Approx(1).epsilon(1e3 * kEps));
+                CHECK_FALSE(hit(poly, Ray{eye, out - eye}, Interval{}, h));
                 ++checked;
             }
         }

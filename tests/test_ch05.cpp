@@ -3,6 +3,7 @@
 #include "render/render.hpp"
 #include "io/scene_file.hpp"
 #include "geometry/sphere.hpp"
+#include "shading/light.hpp"
 #include "accel/surface_list.hpp"
 #include "support.hpp"
 
@@ -10,6 +11,8 @@
 #include <filesystem>
 #include <fstream>
 #include <memory>
+#include <pcg_random.hpp>
+#include <random>
 
 using namespace rt;
 namespace fs = std::filesystem;
@@ -23,26 +26,101 @@ const std::string kScenes = std::string(RTLAB_SOURCE_DIR) + "/chapters/ch05_ray_
 
 TEST_SUITE("ch05") {
 
-TEST_CASE("5.1 SurfaceList::hit returns the closest hit in [t0, t1], whatever the order") {
-    auto near = std::make_shared<Sphere>("near", Vec3(0, 0, -3), 1);
-    auto far = std::make_shared<Sphere>("far", Vec3(0, 0, -10), 2);
+TEST_CASE("5.1 SurfaceList::hit returns the closest hit in the interval, whatever the order") {
     for (bool near_first : {true, false}) {
         SurfaceList list;
-        list.add(near_first ? near : far);
-        list.add(near_first ? far : near);
+        const Sphere near(Vec3(0, 0, -3), 1), far(Vec3(0, 0, -10), 2);
+        const SurfaceId a = list.add(near_first ? near : far, 1, "a");
+        const SurfaceId b = list.add(near_first ? far : near, 2, "b");
+        const SurfaceId near_id = near_first ? a : b, far_id = near_first ? b : a;
         HitRecord rec;
         const Ray r{Vec3(0), Vec3(0, 0, -1)};
-        REQUIRE(list.hit(r, 0, kInfinity, rec));
-        CHECK(rec.surface == near.get());
+        REQUIRE(list.hit(r, Interval{}, rec));
+        CHECK(rec.surface == near_id);
+        CHECK(rec.material == list[near_id].material);
         CHECK(rec.t == doctest::Approx(2));
-        REQUIRE(list.hit(r, 4.5, kInfinity, rec));  // past the near sphere
-        CHECK(rec.surface == far.get());
+        REQUIRE(list.hit(r, Interval{4.5, kInfinity}, rec));  // past the near sphere
+        CHECK(rec.surface == far_id);
         CHECK(rec.t == doctest::Approx(8));
-        CHECK_FALSE(list.hit(r, 0, 1.5, rec));
+        HitRecord untouched;
+        CHECK_FALSE(list.hit(r, Interval{0, 1.5}, untouched));
+        CHECK(untouched.surface == kNone);  // a miss leaves the record alone
         CHECK(list.bounding_box().min.z == doctest::Approx(-12));
     }
     HitRecord rec;
-    CHECK_FALSE(SurfaceList().hit(Ray{Vec3(0), Vec3(1, 0, 0)}, 0, kInfinity, rec));
+    CHECK_FALSE(SurfaceList().hit(Ray{Vec3(0), Vec3(1, 0, 0)}, Interval{}, rec));
+}
+
+TEST_CASE("5.1 no field of a farther hit survives in the closest one") {
+    // The bug this architecture removes: a mesh hit found first, then a nearer sphere. The
+    // record must be the sphere's alone, with no triangle index or barycentrics left over.
+    const Scene scene = load_scene_text(R"({"camera": {"eye": [0,0,5], "target": [0,0,0]}, "shading": "barycentric",
+        "surfaces": [{"type": "icosphere", "center": [0,0,-2], "radius": 1, "subdivisions": 1},
+                     {"type": "sphere", "center": [0,0,0], "radius": 0.5}]})",
+                                        "stale.json", ".");
+    RenderOptions o;
+    o.width = 41;
+    o.height = 41;
+    const Pick p = pick(scene, o, 20, 20);
+    REQUIRE(p.hit.has_value());
+    CHECK(scene.surfaces.name(p.hit->surface) == "sphere 1");
+    CHECK(p.hit->primitive == kNone);
+    CHECK_FALSE(p.hit->has_barycentrics);
+    CHECK(p.hit->t == doctest::Approx(4.5));
+    // Shaded by barycentrics, the sphere in front of the mesh shows its normal, (0, 0, 1) at
+    // the centre, not the colours of a triangle behind it.
+    const Image img = render(scene, o).image;
+    CHECK(img.at(20, 20).r == doctest::Approx(0.5));
+    CHECK(img.at(20, 20).g == doctest::Approx(0.5));
+    CHECK(img.at(20, 20).b == doctest::Approx(1));
+    // Where only the mesh is seen, the barycentric colours sum to 1.
+    const Color mesh_pixel = img.at(20, 14);
+    CHECK(mesh_pixel.r + mesh_pixel.g + mesh_pixel.b == doctest::Approx(1).epsilon(1e-5));
+}
+
+TEST_CASE("any-hit: occluded agrees with the closest hit on every ray, and respects the interval") {
+    Scene scene = load_scene_file(kScenes + "meshes.json");
+    pcg32 rng(11);
+    std::uniform_real_distribution<double> u(-1, 1);
+    const Box box = scene.surfaces.bounding_box();
+    const Vec3 mid = (box.min + box.max) / Real(2), half = (box.max - box.min) / Real(2);
+    int disagree = 0, hits = 0;
+    for (int k = 0; k < 3000; ++k) {
+        const Vec3 origin = mid + Real(2) * half * Vec3(Real(u(rng)), Real(u(rng)), Real(u(rng)));
+        const Vec3 target = mid + half * Vec3(Real(u(rng)), Real(u(rng)), Real(u(rng)));
+        const Ray r{origin, target - origin};
+        HitRecord rec;
+        const bool found = scene.hit(r, Interval{}, rec);
+        hits += found;
+        disagree += found != scene.occluded(r, Interval{});
+        if (found) {
+            // Nothing is in the way before the closest hit, and the hit itself is (the
+            // margins allow for t's rounding).
+            const Real t = rec.t;
+            disagree += scene.occluded(r, Interval{0, t * Real(0.999)});
+            disagree += !scene.occluded(r, Interval{0, t * Real(1.001)});
+        }
+    }
+    CHECK(hits > 300);
+    CHECK(disagree == 0);
+    CHECK_FALSE(Scene().occluded(Ray{Vec3(0), Vec3(1, 0, 0)}, Interval{}));
+}
+
+TEST_CASE("lights report direction, distance and colour") {
+    Light point;
+    point.position = Vec3(3, 4, 0);
+    point.color = Color(0.5f);
+    const LightSample s = point.sample(Vec3(0));
+    CHECK(s.distance == doctest::Approx(5));
+    CHECK(s.direction.x == doctest::Approx(0.6));
+    CHECK(s.direction.y == doctest::Approx(0.8));
+    CHECK(s.color == Color(0.5f));
+    Light sun;
+    sun.type = Light::Type::directional;
+    sun.direction = Vec3(0, -2, 0);
+    const LightSample d = sun.sample(Vec3(7, 8, 9));
+    CHECK(d.distance == kInfinity);
+    CHECK(d.direction == Vec3(0, 1, 0));
 }
 
 TEST_CASE("5.2 lambert: c_r c_l max(0, n . l)") {

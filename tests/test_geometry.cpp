@@ -39,24 +39,24 @@ TEST_CASE("bad meshes are rejected, degenerate triangles dropped") {
     MeshData m;
     m.positions = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {2, 0, 0}};
     m.triangles = {{0, 1, 9}};
-    CHECK_THROWS_WITH_AS(TriangleMesh("m", m), doctest::Contains("uses vertex 9 of 4"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(Mesh{m}, doctest::Contains("uses vertex 9 of 4"), std::invalid_argument);
     m.triangles = {{0, 1, 2}, {0, 1, 3}};  // the second is collinear: zero area
-    const TriangleMesh mesh("m", m);
+    const Mesh mesh(m);
     CHECK(mesh.dropped_degenerate() == 1);
     CHECK(mesh.data().triangles.size() == 1);
     m.triangles = {{0, 1, 3}};
-    CHECK_THROWS_AS(TriangleMesh("m", m), std::invalid_argument);
-    CHECK_THROWS_AS(Triangle("t", Vec3(0), Vec3(1, 0, 0), Vec3(2, 0, 0)), std::invalid_argument);
+    CHECK_THROWS_AS(Mesh{m}, std::invalid_argument);
+    CHECK_THROWS_AS(Triangle(Vec3(0), Vec3(1, 0, 0), Vec3(2, 0, 0)), std::invalid_argument);
 }
 
 TEST_CASE("degenerate polygons are rejected with a clear error") {
-    CHECK_THROWS_WITH_AS(Polygon("p", {{0, 0, 0}, {1, 0, 0}}), doctest::Contains("at least 3 vertices"), std::invalid_argument);
-    CHECK_THROWS_WITH_AS(Polygon("p", {{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}), doctest::Contains("collinear"), std::invalid_argument);
-    CHECK_THROWS_WITH_AS(Polygon("p", {{0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {0, 1, 0}}), doctest::Contains("same point"),
+    CHECK_THROWS_WITH_AS(Polygon({{0, 0, 0}, {1, 0, 0}}), doctest::Contains("at least 3 vertices"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(Polygon({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}), doctest::Contains("collinear"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(Polygon({{0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {0, 1, 0}}), doctest::Contains("same point"),
                          std::invalid_argument);
-    CHECK_THROWS_WITH_AS(Polygon("p", {{0, 0, 0}, {1, 0, 0}, {1, 1, 0.5}, {0, 1, 0}}), doctest::Contains("off the plane"),
+    CHECK_THROWS_WITH_AS(Polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0.5}, {0, 1, 0}}), doctest::Contains("off the plane"),
                          std::invalid_argument);
-    CHECK_THROWS_AS(Polygon("p", {{0, 0, 0}, {1, 0, 0}, {0, std::nan(""), 0}}), std::invalid_argument);
+    CHECK_THROWS_AS(Polygon({{0, 0, 0}, {1, 0, 0}, {0, std::nan(""), 0}}), std::invalid_argument);
 }
 
 }
