@@ -1,0 +1,37 @@
+# The layering of common/ is enforced by the compiler: in each layer's view (build/layers/L)
+# a header of any layer above L does not exist. For every layer, include a header of each
+# layer above it (must fail, "No such file") and one of its own (must compile: the view
+# works; the build already compiles every header inside its own layer).
+#   cmake -DCXX=... -DVIEWS=build/layers -DSOURCE=common "-DLAYERS=core;geometry;..." -DWORK=dir -P layers_test.cmake
+file(MAKE_DIRECTORY ${WORK})
+set(failures 0)
+set(checks 0)
+foreach(layer IN LISTS LAYERS)
+    set(above OFF)
+    foreach(other IN LISTS LAYERS)
+        if(NOT above AND NOT other STREQUAL layer)
+            continue()
+        endif()
+        file(GLOB headers RELATIVE ${SOURCE} ${SOURCE}/${other}/*.hpp)
+        list(GET headers 0 header)
+        file(WRITE ${WORK}/${layer}_sees_${other}.cpp "#include \"${header}\"\n")
+        execute_process(COMMAND ${CXX} -std=c++20 -fsyntax-only -I${VIEWS}/${layer} ${INCLUDES}
+                                ${WORK}/${layer}_sees_${other}.cpp
+                        RESULT_VARIABLE code ERROR_VARIABLE err)
+        math(EXPR checks "${checks} + 1")
+        if(above)
+            if(code EQUAL 0 OR NOT err MATCHES "No such file")
+                message(SEND_ERROR "${layer} can include ${header}, from a layer above it")
+                math(EXPR failures "${failures} + 1")
+            endif()
+        elseif(NOT code EQUAL 0)
+            message(SEND_ERROR "${layer} cannot include ${header}: ${err}")
+            math(EXPR failures "${failures} + 1")
+        endif()
+        if(other STREQUAL layer)
+            set(above ON)
+        endif()
+    endforeach()
+endforeach()
+math(EXPR passed "${checks} - ${failures}")
+message("${passed} passed, ${failures} failed")

@@ -1,0 +1,83 @@
+#!/usr/bin/env python3
+"""The JSON Schema of scene files, tested as a schema (python3-jsonschema, Draft 2020-12).
+
+  schema_test.py ROOT LIMITS_TOOL CHAPTER_BINARY WORK_DIR
+
+- The schema is itself a valid Draft 2020-12 schema.
+- Every limit of common/geometry/limits.hpp (printed by LIMITS_TOOL) is what the schema
+  states at the place the table names: one table, and the schema agrees with it.
+- Every scene file in the repository and every ```json example of book appendix A
+  validates, and loads and renders in CHAPTER_BINARY (exit 0).
+- Every file in tests/data/bad/ fails both: the schema rejects it, and the loader exits 2.
+Prints one line per failure and a closing "N passed, N failed" line; exit 1 on any failure.
+"""
+import json
+import pathlib
+import re
+import subprocess
+import sys
+
+import jsonschema
+
+root, limits_tool, chapter, work = (pathlib.Path(a) for a in sys.argv[1:5])
+work.mkdir(parents=True, exist_ok=True)
+schema = json.loads((root / "common/io/scene.schema.json").read_text())
+passed = failed = 0
+
+
+def check(ok, what):
+    global passed, failed
+    if ok:
+        passed += 1
+    else:
+        failed += 1
+        print("FAIL:", what)
+
+
+def resolve(pointer):
+    node = schema
+    for part in pointer.strip("/").split("/"):
+        node = node[int(part)] if isinstance(node, list) else node[part.replace("~1", "/").replace("~0", "~")]
+    return node
+
+
+jsonschema.Draft202012Validator.check_schema(schema)
+validator = jsonschema.Draft202012Validator(schema)
+
+for limit in json.loads(subprocess.run([str(limits_tool)], check=True, capture_output=True, text=True).stdout):
+    node = resolve(limit["schema"])
+    lo, hi = ("minItems", "maxItems") if node.get("type") == "array" or "minItems" in node else ("minimum", "maximum")
+    check(node.get(lo) == limit["min"] and node.get(hi) == limit["max"],
+          f'{limit["name"]}: code says {limit["min"]}..{limit["max"]}, schema at {limit["schema"]} says '
+          f'{node.get(lo)}..{node.get(hi)}')
+
+
+def loads(path):
+    r = subprocess.run([str(chapter), "--scene", str(path), "--width", "4", "--height", "3",
+                        "-o", str(work / "schema-test.pfm")], capture_output=True, text=True)
+    return r.returncode, r.stderr.strip()
+
+
+good = sorted(root.glob("chapters/*/scenes/*.json")) + sorted(root.glob("bench/scenes/*.json"))
+check(len(good) >= 6, f"expected the repository's scene files, found {len(good)}")
+appendix = (root / "book/appendix-a-scene-format.md").read_text()
+for i, block in enumerate(re.findall(r"```json\n(.*?)```", appendix, re.S)):
+    path = work / f"appendix-example-{i}.json"
+    path.write_text(block)
+    good.append(path)
+for path in good:
+    doc = json.loads(path.read_text())
+    errors = [e.message for e in validator.iter_errors(doc)]
+    check(not errors, f"{path}: schema rejects a good file: {errors[:1]}")
+    code, err = loads(path)
+    check(code == 0, f"{path}: loader exit {code}: {err}")
+
+bad = sorted((root / "tests/data/bad").glob("*.json"))
+check(len(bad) >= 10, f"expected at least 10 bad files, found {len(bad)}")
+for path in bad:
+    check(not validator.is_valid(json.loads(path.read_text())), f"{path}: the schema accepts a bad file")
+    code, err = loads(path)
+    check(code == 2 and err.count("\n") == 0 and path.name in err, f"{path}: loader exit {code}, message {err!r}")
+
+print(f"{passed} passed, {failed} failed")
+sys.exit(1 if failed else 0)
