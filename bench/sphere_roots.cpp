@@ -49,8 +49,10 @@ void measure(Roots roots, const std::vector<Ray>& rays, const Vec3& c, const std
     const auto start = std::chrono::steady_clock::now();
     for (const Ray& r : rays) {
         Real tn, tf;
-        if (roots(r, c, Real(1), tn, tf)) sink += tn;
-        else ++misses;
+        if (roots(r, c, Real(1), tn, tf))
+            sink += tn;
+        else
+            ++misses;
     }
     const double ns = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() /
                       double(rays.size());
@@ -77,8 +79,8 @@ int main(int argc, char** argv) {
     }
     const double eps = std::numeric_limits<Real>::epsilon();
     std::printf("Real=%s, %d rays per distance, best of %d rounds\n", real_name(), n, rounds);
-    std::printf("%10s | %9s %12s %8s | %9s %12s %8s\n", "D/R", "textbook", "worst err", "misses", "stable",
-                "worst err", "misses");
+    std::printf("%10s | %9s %12s %8s | %9s %12s %8s\n", "D/R", "textbook", "worst err", "misses", "stable", "worst err",
+                "misses");
     std::printf("%10s | %9s %12s %8s | %9s %12s %8s\n", "", "ns/ray", "(eps)", "", "ns/ray", "(eps)", "");
     for (double D : {1e1, 1e2, 1e3, 1e4, 1e5, 1e6}) {
         pcg32 rng(1);

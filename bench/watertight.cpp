@@ -6,9 +6,9 @@
 // Rays aimed exactly at shared edges and vertices of closed meshes (see common/leaks.hpp):
 // leaks, and nanoseconds per ray for each form, measured interleaved. With an OBJ path the
 // mesh is measured too (only its interior edges count; an open mesh has no others).
-#include "support/leaks.hpp"
-#include "io/obj.hpp"
 #include "geometry/procedural.hpp"
+#include "io/obj.hpp"
+#include "support/leaks.hpp"
 
 #include <chrono>
 #include <cstdio>
@@ -45,7 +45,8 @@ int main(int argc, char** argv) {
         for (int k = 0; k < 2; ++k) {
             const auto start = std::chrono::steady_clock::now();
             r[k] = measure_leaks(mesh, tests[k], rays, 1);
-            ns[k] = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() / double(rays);
+            ns[k] = std::chrono::duration<double, std::nano>(std::chrono::steady_clock::now() - start).count() /
+                    double(rays);
         }
         std::printf("%-28s | %10ld %8.1f | %10ld %8.1f\n", name.c_str(), r[0].leaks, ns[0], r[1].leaks, ns[1]);
     }

@@ -10,8 +10,7 @@
 namespace rt {
 
 // @book textbook
-bool sphere_roots_textbook(const Ray& ray, const Vec3& center, Real radius, Real& t_near,
-                           Real& t_far) {
+bool sphere_roots_textbook(const Ray& ray, const Vec3& center, Real radius, Real& t_near, Real& t_far) {
     // @exercise 2.1 | sphere_roots_textbook | book §2.2
     throw NotImplemented("exercise 2.1 (sphere_roots_textbook) is not done yet: see book §2.2");
     // @end

@@ -12,8 +12,7 @@
 namespace rt {
 
 // @book cramer
-bool ray_triangle(const Ray& ray, const Vec3& A, const Vec3& B, const Vec3& C, Interval interval,
-                  TriangleHit& result) {
+bool ray_triangle(const Ray& ray, const Vec3& A, const Vec3& B, const Vec3& C, Interval interval, TriangleHit& result) {
     // @exercise 3.1 | ray_triangle | book §3.2
     throw NotImplemented("exercise 3.1 (ray_triangle) is not done yet: see book §3.2");
     // @end

@@ -2,9 +2,9 @@
 // Write your code between each "@exercise" line and its "@end", in place of the throw.
 // Chapter 05 exercises: the ray tracing program (book §5, course §9.4-9.4.1). Declared in
 // common/accel/surface_list.hpp and common/shading/shading.hpp.
+#include "accel/surface_list.hpp"
 #include "core/exercise.hpp"
 #include "shading/shading.hpp"
-#include "accel/surface_list.hpp"
 
 #include <cmath>
 
@@ -25,8 +25,8 @@ Color lambert(const Color& diffuse, const Color& light, const Vec3& n, const Vec
     // @end
 }
 
-Color blinn_phong_highlight(const Color& specular, float exponent, const Color& light, const Vec3& n,
-                            const Vec3& l, const Vec3& v) {
+Color blinn_phong_highlight(const Color& specular, float exponent, const Color& light, const Vec3& n, const Vec3& l,
+                            const Vec3& v) {
     // @exercise 5.3 | blinn_phong_highlight | book §5.4
     throw NotImplemented("exercise 5.3 (blinn_phong_highlight) is not done yet: see book §5.4");
     // @end

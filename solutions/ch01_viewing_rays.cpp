@@ -1,6 +1,6 @@
 // Chapter 01 exercises: viewing rays (book §1, course §9.2). Declared in common/render/camera.hpp.
-#include "render/camera.hpp"
 #include "core/exercise.hpp"
+#include "render/camera.hpp"
 
 namespace rt {
 

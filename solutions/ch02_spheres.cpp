@@ -8,8 +8,7 @@
 namespace rt {
 
 // @book textbook
-bool sphere_roots_textbook(const Ray& ray, const Vec3& center, Real radius, Real& t_near,
-                           Real& t_far) {
+bool sphere_roots_textbook(const Ray& ray, const Vec3& center, Real radius, Real& t_near, Real& t_far) {
     // @exercise 2.1 | sphere_roots_textbook | book §2.2
     const Vec3& d = ray.direction;
     const Vec3 ec = ray.origin - center;

@@ -10,8 +10,7 @@
 namespace rt {
 
 // @book cramer
-bool ray_triangle(const Ray& ray, const Vec3& A, const Vec3& B, const Vec3& C, Interval interval,
-                  TriangleHit& result) {
+bool ray_triangle(const Ray& ray, const Vec3& A, const Vec3& B, const Vec3& C, Interval interval, TriangleHit& result) {
     // @exercise 3.1 | ray_triangle | book §3.2
     // The 3x3 system [a-b | a-c | d] (beta, gamma, t) = a - e, in the course's letters.
     const Vec3& d = ray.direction;

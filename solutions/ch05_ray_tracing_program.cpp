@@ -1,8 +1,8 @@
 // Chapter 05 exercises: the ray tracing program (book §5, course §9.4-9.4.1). Declared in
 // common/accel/surface_list.hpp and common/shading/shading.hpp.
+#include "accel/surface_list.hpp"
 #include "core/exercise.hpp"
 #include "shading/shading.hpp"
-#include "accel/surface_list.hpp"
 
 #include <cmath>
 
@@ -33,8 +33,8 @@ Color lambert(const Color& diffuse, const Color& light, const Vec3& n, const Vec
     // @end
 }
 
-Color blinn_phong_highlight(const Color& specular, float exponent, const Color& light, const Vec3& n,
-                            const Vec3& l, const Vec3& v) {
+Color blinn_phong_highlight(const Color& specular, float exponent, const Color& light, const Vec3& n, const Vec3& l,
+                            const Vec3& v) {
     // @exercise 5.3 | blinn_phong_highlight | book §5.4
     // No highlight from a light behind the surface, and max(0, .) before the power: an even
     // exponent would otherwise light up the side facing away from h.

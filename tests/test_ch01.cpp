@@ -1,4 +1,4 @@
-// Chapter 01: viewing rays (§9.2).
+// Chapter 01: viewing rays (course §9.2).
 #include "render/camera.hpp"
 #include "support.hpp"
 
@@ -10,7 +10,6 @@ using namespace rt;
 using rt::test::kEps;
 
 TEST_SUITE("ch01") {
-
 TEST_CASE("1.1 camera_basis is orthonormal, right-handed, and looks down -w") {
     const Vec3 dir(1, -2, -3);  // deliberately not unit length
     const Basis b = camera_basis(dir, Vec3(0, 1, 0));
@@ -24,7 +23,7 @@ TEST_CASE("1.1 camera_basis is orthonormal, right-handed, and looks down -w") {
     CHECK(glm::length(uxv - b.w) < 8 * kEps);
     const Vec3 back = -glm::normalize(dir);
     CHECK(glm::length(b.w - back) < 4 * kEps);
-    CHECK(glm::dot(b.v, Vec3(0, 1, 0)) > 0);  // v is "up" on screen
+    CHECK(glm::dot(b.v, Vec3(0, 1, 0)) > 0);               // v is "up" on screen
     CHECK(b.u.y == doctest::Approx(0).epsilon(4 * kEps));  // u is level: perpendicular to up
 }
 
@@ -35,7 +34,7 @@ TEST_CASE("1.1 camera_basis of the standard camera is the world frame") {
     CHECK(b.w == Vec3(0, 0, 1));
 }
 
-TEST_CASE("1.2 window_point maps pixel centres per §9.2") {
+TEST_CASE("1.2 window_point maps pixel centres per course §9.2") {
     // A 4x3 image on the window [-2, 2] x [-1.5, 1.5]: pixels are exactly 1 unit square.
     const Window win{-2, 2, -1.5, 1.5};
     const Vec2 first = window_point(0.5, 0.5, 4, 3, win);  // centre of pixel (0, 0)
@@ -145,5 +144,4 @@ TEST_CASE("stress: every pixel's ray passes through its window point, cameras at
     }
     CHECK(checked == 3 * 50 * 7 * 5);
 }
-
-}
+}  // TEST_SUITE("ch01")

@@ -1,7 +1,7 @@
-// Chapter 02: ray-sphere intersection (§9.3.1).
+// Chapter 02: ray-sphere intersection (course §9.3.1).
+#include "geometry/sphere.hpp"
 #include "render/integrators.hpp"
 #include "render/render.hpp"
-#include "geometry/sphere.hpp"
 #include "support.hpp"
 
 #include <pcg_random.hpp>
@@ -54,13 +54,16 @@ void far_sphere_rays(Real distance, Real fraction, int count, F&& f) {
 }  // namespace
 
 TEST_SUITE("ch02") {
-
 TEST_CASE("course exercise 1: (1,1,1) + t(-1,-1,-1) meets the unit sphere at t = 1 -+ 1/sqrt(3)") {
     const Ray r{Vec3(1, 1, 1), Vec3(-1, -1, -1)};
     const Real want_near = 1 - 1 / std::sqrt(Real(3)), want_far = 1 + 1 / std::sqrt(Real(3));
     Real t_near = 0, t_far = 0;
-    SUBCASE("2.1 textbook") { REQUIRE(sphere_roots_textbook(r, Vec3(0), 1, t_near, t_far)); }
-    SUBCASE("2.2 stable") { REQUIRE(sphere_roots(r, Vec3(0), 1, t_near, t_far)); }
+    SUBCASE("2.1 textbook") {
+        REQUIRE(sphere_roots_textbook(r, Vec3(0), 1, t_near, t_far));
+    }
+    SUBCASE("2.2 stable") {
+        REQUIRE(sphere_roots(r, Vec3(0), 1, t_near, t_far));
+    }
     CHECK(t_near == doctest::Approx(want_near).epsilon(4 * kEps));
     CHECK(t_far == doctest::Approx(want_far).epsilon(4 * kEps));
 }
@@ -99,9 +102,9 @@ TEST_CASE("2.3 hit(Sphere) takes the first root inside the interval") {
 
     // A miss leaves the result alone: the library may pass in the best hit so far.
     SphereHit untouched{-1};
-    CHECK_FALSE(hit(s, r, Interval{0, 3.5}, untouched));          // both roots past max
-    CHECK_FALSE(hit(s, r, Interval{6.5, kInfinity}, untouched));  // both roots before min
-    CHECK_FALSE(hit(s, Ray{Vec3(0), Vec3(0, 0, 1)}, Interval{}, untouched));  // sphere behind the eye
+    CHECK_FALSE(hit(s, r, Interval{0, 3.5}, untouched));                             // both roots past max
+    CHECK_FALSE(hit(s, r, Interval{6.5, kInfinity}, untouched));                     // both roots before min
+    CHECK_FALSE(hit(s, Ray{Vec3(0), Vec3(0, 0, 1)}, Interval{}, untouched));         // sphere behind the eye
     CHECK_FALSE(hit(s, Ray{Vec3(0, 3, 0), Vec3(0, 0, -1)}, Interval{}, untouched));  // passes above it
     CHECK(untouched.t == -1);
 
@@ -186,8 +189,8 @@ TEST_CASE("stress: the textbook form does lose digits there (why 2.2 exists)") {
         REQUIRE(sphere_roots(r, c, 1, tn, tf));
         worst_stable = std::max(worst_stable, rel_error(tn, ref_near));
     });
-    MESSAGE("Real=" << std::string(real_name()) << ": textbook worst " << worst_textbook / kEps << " eps, " << textbook_misses
-                    << " false misses; stable worst " << worst_stable / kEps << " eps");
+    MESSAGE("Real=" << std::string(real_name()) << ": textbook worst " << worst_textbook / kEps << " eps, "
+                    << textbook_misses << " false misses; stable worst " << worst_stable / kEps << " eps");
     CHECK((textbook_misses > 0 || worst_textbook > 100 * std::max(worst_stable, kEps)));
 }
 
@@ -234,5 +237,4 @@ TEST_CASE("analytic: an orthographic sphere covers pi R^2 of the window") {
     CHECK(std::abs(covered - area) < perimeter);
     CHECK(std::abs(covered - area) < 0.01 * area);
 }
-
-}
+}  // TEST_SUITE("ch02")

@@ -1,10 +1,10 @@
-// Chapter 03: ray-triangle intersection (§9.3.2).
-#include "support/leaks.hpp"
+// Chapter 03: ray-triangle intersection (course §9.3.2).
 #include "geometry/mesh.hpp"
 #include "geometry/procedural.hpp"
 #include "geometry/shape.hpp"
 #include "geometry/triangle.hpp"
 #include "support.hpp"
+#include "support/leaks.hpp"
 
 #include <pcg_random.hpp>
 
@@ -24,7 +24,6 @@ const std::pair<const char*, TriangleFn> kForms[] = {{"3.1 Cramer", ray_triangle
 }  // namespace
 
 TEST_SUITE("ch03") {
-
 TEST_CASE("course exercise 2: (1,1,1) + t(-1,-1,-1) hits the triangle at t = 2/3, beta = gamma = 1/3") {
     for (const auto& [form, fn] : kForms) {
         CAPTURE(form);
@@ -69,9 +68,11 @@ TEST_CASE("3.1 and 3.2 agree on random rays") {
         const Vec3 a = rv(), b = rv(), c = rv();
         const Ray r{Vec3(0, 0, 3) + rv(), rv() - Vec3(0, 0, 3)};
         TriangleHit h1{}, h2{};
-        const bool x = ray_triangle(r, a, b, c, Interval{}, h1), y = ray_triangle_watertight(r, a, b, c, Interval{}, h2);
+        const bool x = ray_triangle(r, a, b, c, Interval{}, h1),
+                   y = ray_triangle_watertight(r, a, b, c, Interval{}, h2);
         if (x != y) {  // allowed only within rounding of an edge
-            disagree += std::min({h1.beta, h1.gamma, 1 - h1.beta - h1.gamma, h2.beta, h2.gamma, 1 - h2.beta - h2.gamma}) < -1e-3;
+            disagree += std::min({h1.beta, h1.gamma, 1 - h1.beta - h1.gamma, h2.beta, h2.gamma,
+                                  1 - h2.beta - h2.gamma}) < -1e-3;
             continue;
         }
         if (!x) continue;
@@ -120,12 +121,11 @@ TEST_CASE("watertightness: 10^6 rays at shared edges and vertices, zero leaks fo
     for (const auto& [name, mesh] : {std::pair{"icosphere", &sphere}, std::pair{"cube", &cube}}) {
         const LeakReport wt = measure_leaks(*mesh, TriangleTest::watertight, 500000, 1);
         const LeakReport cr = measure_leaks(*mesh, TriangleTest::cramer, 500000, 1);
-        MESSAGE("Real=" << std::string(real_name()) << " " << std::string(name) << ": " << wt.rays << " rays (" << wt.edge_rays
-                        << " at edges, " << wt.vertex_rays << " at vertices): Cramer leaks " << cr.leaks
+        MESSAGE("Real=" << std::string(real_name()) << " " << std::string(name) << ": " << wt.rays << " rays ("
+                        << wt.edge_rays << " at edges, " << wt.vertex_rays << " at vertices): Cramer leaks " << cr.leaks
                         << ", watertight leaks " << wt.leaks);
         CHECK(wt.rays == 500000);
         CHECK(wt.leaks == 0);
     }
 }
-
-}
+}  // TEST_SUITE("ch03")

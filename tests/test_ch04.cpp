@@ -1,4 +1,4 @@
-// Chapter 04: ray-polygon intersection (§9.3.3).
+// Chapter 04: ray-polygon intersection (course §9.3.3).
 #include "geometry/polygon.hpp"
 #include "support.hpp"
 
@@ -35,7 +35,6 @@ std::vector<Vec2> star2d(int n, Real outer, Real inner) {
 }  // namespace
 
 TEST_SUITE("ch04") {
-
 TEST_CASE("4.1 projection_axes drops the axis of the largest normal component (erratum fixed)") {
     CHECK(projection_axes(Vec3(1, 0, 0)) == std::array<int, 2>{1, 2});
     CHECK(projection_axes(Vec3(0, -1, 0)) == std::array<int, 2>{0, 2});
@@ -88,7 +87,8 @@ TEST_CASE("4.2 the boundary rule: each point of a shared edge belongs to exactly
     // A fan of triangles around (0.5, 0.5) and a tiling of squares: every boundary point
     // sampled lands in exactly one piece.
     const Vec2 c(0.5, 0.5);
-    const std::vector<std::vector<Vec2>> fan{{c, {0, 0}, {1, 0}}, {c, {1, 0}, {1, 1}}, {c, {1, 1}, {0, 1}}, {c, {0, 1}, {0, 0}}};
+    const std::vector<std::vector<Vec2>> fan{
+        {c, {0, 0}, {1, 0}}, {c, {1, 0}, {1, 1}}, {c, {1, 1}, {0, 1}}, {c, {0, 1}, {0, 0}}};
     const std::vector<Vec2> probes{{0.5, 0.5}, {0.25, 0.25}, {0.75, 0.25}, {0.75, 0.75}, {0.25, 0.75}, {0.5, 0.1}};
     for (const Vec2& p : probes) {
         int owners = 0;
@@ -103,7 +103,11 @@ TEST_CASE("4.2 the boundary rule: each point of a shared edge belongs to exactly
             int owners = 0;
             for (int a = 0; a < 2; ++a)
                 for (int b = 0; b < 2; ++b)
-                    owners += inside_polygon_2d({{Real(a), Real(b)}, {Real(a + 1), Real(b)}, {Real(a + 1), Real(b + 1)}, {Real(a), Real(b + 1)}}, p);
+                    owners += inside_polygon_2d({{Real(a), Real(b)},
+                                                 {Real(a + 1), Real(b)},
+                                                 {Real(a + 1), Real(b + 1)},
+                                                 {Real(a), Real(b + 1)}},
+                                                p);
             const bool interior = i < 4 && j < 4;  // the tiling's own right and top edges are out
             CHECK(owners == int(interior));
         }
@@ -171,5 +175,4 @@ TEST_CASE("stress: random regular polygons at scales 1e-3 to 1e3") {
     }
     CHECK(checked == 3 * 200 * 10);
 }
-
-}
+}  // TEST_SUITE("ch04")

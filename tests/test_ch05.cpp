@@ -1,10 +1,10 @@
-// Chapter 05: the ray tracing program (§9.4-9.4.1): closest hit, shading, scene files.
+// Chapter 05: the ray tracing program (course §9.4-9.4.1): closest hit, shading, scene files.
+#include "accel/surface_list.hpp"
+#include "geometry/sphere.hpp"
+#include "io/scene_file.hpp"
 #include "render/integrators.hpp"
 #include "render/render.hpp"
-#include "io/scene_file.hpp"
-#include "geometry/sphere.hpp"
 #include "shading/light.hpp"
-#include "accel/surface_list.hpp"
 #include "support.hpp"
 
 #include <cmath>
@@ -21,11 +21,9 @@ namespace {
 
 const std::string kScenes = std::string(RTLAB_SOURCE_DIR) + "/chapters/ch05_ray_tracing_program/scenes/";
 
-
 }  // namespace
 
 TEST_SUITE("ch05") {
-
 TEST_CASE("5.1 SurfaceList::hit returns the closest hit in the interval, whatever the order") {
     for (bool near_first : {true, false}) {
         SurfaceList list;
@@ -168,7 +166,8 @@ TEST_CASE("analytic: a Lambertian sphere under one directional light, orthograph
             if (r2 > 0.98) continue;  // leave the silhouette to the area check
             const Vec3 n(Real(wx), Real(wy), Real(std::sqrt(1 - r2)));
             const float lit = float(std::max(0.0, double(glm::dot(n, l))));
-            for (int c = 0; c < 3; ++c) CHECK(img.at(x, y)[c] == doctest::Approx(cr[c] * 0.1f + cr[c] * lit).epsilon(1e-4));
+            for (int c = 0; c < 3; ++c)
+                CHECK(img.at(x, y)[c] == doctest::Approx(cr[c] * 0.1f + cr[c] * lit).epsilon(1e-4));
             ++checked;
         }
     CHECK(checked > 4500);
@@ -195,6 +194,4 @@ TEST_CASE("skipping: a black light and unused materials are dropped and cost not
     CHECK(a.counters.specular_terms < a.counters.light_terms);  // matte surfaces skip the highlight
     CHECK(a.image.pixels == b.image.pixels);
 }
-
-
-}
+}  // TEST_SUITE("ch05")

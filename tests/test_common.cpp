@@ -1,16 +1,16 @@
 // The shared library: images, sampling, the render loop.
+#include "geometry/sphere.hpp"
 #include "io/image_file.hpp"
+#include "render/camera.hpp"
 #include "render/integrators.hpp"
 #include "render/render.hpp"
-#include "render/camera.hpp"
-#include "geometry/sphere.hpp"
 #include "support.hpp"
 
+#include <unistd.h>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <memory>
-#include <unistd.h>
 
 using namespace rt;
 namespace fs = std::filesystem;
@@ -50,8 +50,7 @@ bool same_bits(const Image& a, const Image& b) {
 }  // namespace
 
 TEST_SUITE("common") {
-
-TEST_CASE("bounding_box of a sphere (§9.4.1)") {
+TEST_CASE("bounding_box of a sphere (course §9.4.1)") {
     const Box b = bounding_box(Sphere(Vec3(1, 2, 3), 2));
     CHECK(b.min == Vec3(-1, 0, 1));
     CHECK(b.max == Vec3(3, 4, 5));
@@ -77,10 +76,9 @@ TEST_CASE("sRGB transfer function: known values and round trip") {
     CHECK(linear_to_srgb(1) == doctest::Approx(1));
     CHECK(linear_to_srgb(0.5f) == doctest::Approx(0.735357f).epsilon(1e-5));
     CHECK(linear_to_srgb(0.002f) == doctest::Approx(0.02584f).epsilon(1e-4));  // the linear toe
-    CHECK(linear_to_srgb(-3) == 0);                                             // clamped
+    CHECK(linear_to_srgb(-3) == 0);                                            // clamped
     CHECK(linear_to_srgb(7) == doctest::Approx(1));
-    for (int i = 0; i <= 255; ++i)
-        CHECK(std::lround(255 * linear_to_srgb(srgb_to_linear(float(i) / 255))) == i);
+    for (int i = 0; i <= 255; ++i) CHECK(std::lround(255 * linear_to_srgb(srgb_to_linear(float(i) / 255))) == i);
 }
 
 TEST_CASE("PNG: written sRGB, read back to within one 8-bit step") {
@@ -130,7 +128,8 @@ TEST_CASE("image writers never leave a half file") {
 TEST_CASE("bad image files give one clear error") {
     const fs::path dir = temp_dir();
     std::ofstream(dir / "junk.png") << "this is not a PNG";
-    CHECK_THROWS_WITH_AS(read_png((dir / "junk.png").string()), doctest::Contains("cannot read image"), std::runtime_error);
+    CHECK_THROWS_WITH_AS(read_png((dir / "junk.png").string()), doctest::Contains("cannot read image"),
+                         std::runtime_error);
     CHECK_THROWS_AS(read_png((dir / "missing.png").string()), std::runtime_error);
     std::ofstream(dir / "short.pfm") << "PF\n4 4\n-1.0\nabc";
     CHECK_THROWS_WITH_AS(read_pfm((dir / "short.pfm").string()), doctest::Contains("truncated"), std::runtime_error);
@@ -242,5 +241,4 @@ TEST_CASE("pick: what the centre pixel sees") {
     CHECK(corner.ray.direction.y > 0);  // row 0 is the top of the image
     CHECK(corner.ray.direction.x < 0);
 }
-
-}
+}  // TEST_SUITE("common")

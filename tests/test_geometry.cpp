@@ -11,14 +11,14 @@
 using namespace rt;
 
 TEST_SUITE("common") {
-
 TEST_CASE("procedural meshes are closed where they should be, with outward normals") {
     for (const auto& [name, mesh] : {std::pair{"icosphere", icosphere(Vec3(1, 2, 3), 2, 2)},
                                      std::pair{"cube", subdivided_cube(Vec3(1, 2, 3), 2, 3)}}) {
         CAPTURE(name);
         std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
         for (const auto& t : mesh.triangles) {
-            const Vec3 n = glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
+            const Vec3 n =
+                glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
             const Vec3 centroid = (mesh.positions[t[0]] + mesh.positions[t[1]] + mesh.positions[t[2]]) / Real(3);
             CHECK(glm::dot(n, centroid - Vec3(1, 2, 3)) > 0);
             for (int k = 0; k < 3; ++k) ++directed[{t[k], t[(k + 1) % 3]}];
@@ -50,13 +50,14 @@ TEST_CASE("bad meshes are rejected, degenerate triangles dropped") {
 }
 
 TEST_CASE("degenerate polygons are rejected with a clear error") {
-    CHECK_THROWS_WITH_AS(Polygon({{0, 0, 0}, {1, 0, 0}}), doctest::Contains("at least 3 vertices"), std::invalid_argument);
-    CHECK_THROWS_WITH_AS(Polygon({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}), doctest::Contains("collinear"), std::invalid_argument);
+    CHECK_THROWS_WITH_AS(Polygon({{0, 0, 0}, {1, 0, 0}}), doctest::Contains("at least 3 vertices"),
+                         std::invalid_argument);
+    CHECK_THROWS_WITH_AS(Polygon({{0, 0, 0}, {1, 1, 1}, {2, 2, 2}}), doctest::Contains("collinear"),
+                         std::invalid_argument);
     CHECK_THROWS_WITH_AS(Polygon({{0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {0, 1, 0}}), doctest::Contains("same point"),
                          std::invalid_argument);
     CHECK_THROWS_WITH_AS(Polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0.5}, {0, 1, 0}}), doctest::Contains("off the plane"),
                          std::invalid_argument);
     CHECK_THROWS_AS(Polygon({{0, 0, 0}, {1, 0, 0}, {0, std::nan(""), 0}}), std::invalid_argument);
 }
-
-}
+}  // TEST_SUITE("common")

@@ -5,9 +5,9 @@
 
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
 #include <filesystem>
 #include <fstream>
-#include <unistd.h>
 
 using namespace rt;
 namespace fs = std::filesystem;
@@ -30,7 +30,6 @@ const char* kMinimal = R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0]}, "s
 }  // namespace
 
 TEST_SUITE("common") {
-
 TEST_CASE("every shipped scene file loads") {
     int n = 0;
     for (const auto& e : fs::directory_iterator(kScenes)) {
@@ -46,40 +45,49 @@ TEST_CASE("every shipped scene file loads") {
 
 TEST_CASE("scene file errors name the file, line, column and key") {
     CHECK(load_error(kMinimal) == "no error");
-    CHECK(load_error("{\n  \"camera\": {\"eye\": [0, 0, 5], \"target\": [0, 0, 0]},\n  \"surfaces\": [],\n  \"colour\": 1\n}") ==
+    CHECK(load_error("{\n  \"camera\": {\"eye\": [0, 0, 5], \"target\": [0, 0, 0]},\n  \"surfaces\": [],\n  "
+                     "\"colour\": 1\n}") ==
           "test.json:4:3: /colour: unknown key 'colour' (expected one of: $schema, description, camera, shading, "
           "background, ambient, materials, lights, surfaces)");
-    CHECK(load_error("{\"camera\": {\"eye\": [0, 0, 5], \"target\": [0, 0, 0]},\n \"surfaces\": [\n  {\"type\": \"sphere\", "
-                     "\"center\": [0, 0, 0], \"radius\": -1}]}") ==
-          "test.json:3:43: /surfaces/0/radius: must be > 0");
-    CHECK(load_error("{\"camera\": {\"eye\": [0, 0, 5], \"target\": [0, 0, 0]},\n \"surfaces\": [\n  {\"type\": \"sphere\", "
-                     "\"center\": [0, 0], \"radius\": 1}]}") ==
+    CHECK(load_error(
+              "{\"camera\": {\"eye\": [0, 0, 5], \"target\": [0, 0, 0]},\n \"surfaces\": [\n  {\"type\": \"sphere\", "
+              "\"center\": [0, 0, 0], \"radius\": -1}]}") == "test.json:3:43: /surfaces/0/radius: must be > 0");
+    CHECK(load_error(
+              "{\"camera\": {\"eye\": [0, 0, 5], \"target\": [0, 0, 0]},\n \"surfaces\": [\n  {\"type\": \"sphere\", "
+              "\"center\": [0, 0], \"radius\": 1}]}") ==
           "test.json:3:22: /surfaces/0/center: must be an array of 3 numbers");
-    CHECK(load_error("{\"camera\": {\"eye\": [0, 0, 5]\n, \"target\": [0, 0, 0]},,}") .find("test.json:2:24: not valid JSON") == 0);
+    CHECK(load_error("{\"camera\": {\"eye\": [0, 0, 5]\n, \"target\": [0, 0, 0]},,}")
+              .find("test.json:2:24: not valid JSON") == 0);
     CHECK(load_error(R"({"surfaces": []})") == "test.json:1:1: /: missing key 'camera'");
     CHECK(load_error(R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 5]}, "surfaces": []})") ==
           "test.json:1:2: /camera: camera: eye and target are the same point");
     const std::string prefix = R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0]}, )";
-    CHECK(load_error(prefix + R"("surfaces": [{"type": "sphere", "center": [0,0,0], "radius": 1, "material": "gold"}]})")
-              .find("/surfaces/0/material: no material named \"gold\"") != std::string::npos);
-    CHECK(load_error(prefix + R"("surfaces": [{"type": "teapot"}]})").find("unknown surface type \"teapot\"") != std::string::npos);
+    CHECK(
+        load_error(prefix + R"("surfaces": [{"type": "sphere", "center": [0,0,0], "radius": 1, "material": "gold"}]})")
+            .find("/surfaces/0/material: no material named \"gold\"") != std::string::npos);
+    CHECK(load_error(prefix + R"("surfaces": [{"type": "teapot"}]})").find("unknown surface type \"teapot\"") !=
+          std::string::npos);
     CHECK(load_error(prefix + R"("surfaces": [{"type": "polygon", "vertices": [[0,0,0],[1,1,1],[2,2,2]]}]})")
               .find("/surfaces/0: polygon: has no area") != std::string::npos);
     CHECK(load_error(prefix + R"("surfaces": [{"type": "mesh", "file": "no/such.obj"}]})")
               .find("/surfaces/0/file: mesh ./no/such.obj: no such file") != std::string::npos);
     CHECK(load_error(prefix + R"("lights": [{"type": "spot", "position": [0,0,0]}], "surfaces": []})")
-              .find("/lights/0/type: unknown light type \"spot\" (expected point or directional)") != std::string::npos);
+              .find("/lights/0/type: unknown light type \"spot\" (expected point or directional)") !=
+          std::string::npos);
     CHECK(load_error(prefix + R"("materials": {"m": {"diffuse": [1,1,1], "shine": 3}}, "surfaces": []})")
               .find("/materials/m/shine: unknown key 'shine'") != std::string::npos);
-    CHECK(load_error(prefix + R"("shading": "toon", "surfaces": []})").find("unknown shading \"toon\"") != std::string::npos);
-    CHECK_THROWS_WITH_AS(load_scene_file("/no/such/scene.json"), "/no/such/scene.json: cannot open scene file", SceneError);
+    CHECK(load_error(prefix + R"("shading": "toon", "surfaces": []})").find("unknown shading \"toon\"") !=
+          std::string::npos);
+    CHECK_THROWS_WITH_AS(load_scene_file("/no/such/scene.json"), "/no/such/scene.json: cannot open scene file",
+                         SceneError);
 }
 
 TEST_CASE("OBJ meshes: faces fanned into triangles, bad files rejected in one line") {
     const fs::path dir = fs::temp_directory_path() / ("rtlab-obj-" + std::to_string(::getpid()));
     fs::create_directories(dir);
-    std::ofstream(dir / "quad.obj") << "# a unit square as one quad and a triangle\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\n"
-                                       "f 1 2 3 4\nf 2 5 3\n";
+    std::ofstream(dir / "quad.obj")
+        << "# a unit square as one quad and a triangle\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 0 0\n"
+           "f 1 2 3 4\nf 2 5 3\n";
     const MeshData m = load_obj((dir / "quad.obj").string());
     CHECK(m.positions.size() == 5);
     CHECK(m.triangles.size() == 3);
@@ -129,5 +137,4 @@ TEST_CASE("the book's scene-format examples load, and the schema is valid JSON")
     CHECK_FALSE(parsed.is_discarded());
     CHECK(parsed.contains("properties"));
 }
-
-}
+}  // TEST_SUITE("common")

@@ -54,7 +54,8 @@ bool excerpt(const fs::path& root, const std::string& file, const std::string& n
         if (inside && !std::regex_match(l, marker)) body.push_back(l);
     }
     if (!found || inside) {
-        out = found ? "marker '" + name + "' in " + file + " has no @book-end" : "no marker '// @book " + name + "' in " + file;
+        out = found ? "marker '" + name + "' in " + file + " has no @book-end"
+                    : "no marker '// @book " + name + "' in " + file;
         return false;
     }
     std::size_t indent = std::string::npos;
@@ -75,9 +76,12 @@ int main(int argc, char** argv) {
     bool check = false;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
-        if (a == "--check") check = true;
-        else if (a == "--root" && i + 1 < argc) root = argv[++i];
-        else if (a == "--out" && i + 1 < argc) out = argv[++i];
+        if (a == "--check")
+            check = true;
+        else if (a == "--root" && i + 1 < argc)
+            root = argv[++i];
+        else if (a == "--out" && i + 1 < argc)
+            out = argv[++i];
         else {
             std::cerr << "usage: rtlab-book --root SRC_DIR --out OUT_DIR [--check]\n";
             return 2;
@@ -126,8 +130,9 @@ int main(int argc, char** argv) {
         const fs::path md = out / "md" / ch.filename();
         std::ofstream(md) << text;
         const fs::path html = out / ch.filename().replace_extension(".html");
-        const std::string cmd = "pandoc --standalone --mathml --toc --toc-depth=2 --css book.css --resource-path=" +
-                                out.string() + " -o '" + html.string() + "' '" + md.string() + "'";
+        const std::string cmd =
+            "pandoc --standalone --mathml --toc --toc-depth=2 --css book.css --resource-path=" + out.string() +
+            " -o '" + html.string() + "' '" + md.string() + "'";
         if (std::system(cmd.c_str()) != 0) {
             std::cerr << "rtlab-book: pandoc failed on " << ch.string() << '\n';
             return 1;

@@ -20,13 +20,16 @@ namespace {
 struct Levels {
     int w, h;
     std::vector<float> v;  // w*h*3, 0..255
-    float at(int x, int y, int c) const { return v[(std::size_t(y) * std::size_t(w) + std::size_t(x)) * 3 + std::size_t(c)]; }
+    float at(int x, int y, int c) const {
+        return v[(std::size_t(y) * std::size_t(w) + std::size_t(x)) * 3 + std::size_t(c)];
+    }
 };
 
 Levels levels(const rt::Image& img) {
     Levels l{img.width, img.height, std::vector<float>(img.pixels.size() * 3)};
     for (std::size_t i = 0; i < img.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) l.v[3 * i + std::size_t(c)] = std::round(255.0f * rt::linear_to_srgb(img.pixels[i][c]));
+        for (int c = 0; c < 3; ++c)
+            l.v[3 * i + std::size_t(c)] = std::round(255.0f * rt::linear_to_srgb(img.pixels[i][c]));
     return l;
 }
 
@@ -66,7 +69,8 @@ int main(int argc, char** argv) {
     cli.add_option("B", b_path, "second image (e.g. the render)")->required();
     cli.add_option("--heatmap", heatmap, "write a PNG of the per-pixel error here");
     cli.add_option("--radius", radius, "neighbourhood radius in pixels for edge tolerance")->check(CLI::Range(0, 8));
-    cli.add_option("--threshold", threshold, "a pixel is 'over' if its error exceeds this many levels")->check(CLI::Range(0.0f, 255.0f));
+    cli.add_option("--threshold", threshold, "a pixel is 'over' if its error exceeds this many levels")
+        ->check(CLI::Range(0.0f, 255.0f));
     cli.add_option("--max-rmse", max_rmse, "fail if RMSE (levels) exceeds this");
     cli.add_option("--max-over", max_over, "fail if more than this percentage of pixels is over the threshold");
     cli.add_option("--min-psnr", min_psnr, "fail if PSNR (dB) is below this");
@@ -111,8 +115,8 @@ int main(int argc, char** argv) {
     const double rmse = std::sqrt(sum_sq / double(n));
     const double psnr = rmse > 0 ? 20.0 * std::log10(255.0 / rmse) : std::numeric_limits<double>::infinity();
     const double over_pct = 100.0 * double(over) / double(n);
-    std::printf("rmse %.4f  psnr %.2f dB  max %.0f  mean %.4f  over %.4f%% (threshold %.0f, radius %d)\n", rmse,
-                psnr, worst, sum_abs / double(n), over_pct, threshold, radius);
+    std::printf("rmse %.4f  psnr %.2f dB  max %.0f  mean %.4f  over %.4f%% (threshold %.0f, radius %d)\n", rmse, psnr,
+                worst, sum_abs / double(n), over_pct, threshold, radius);
 
     if (!heatmap.empty()) {
         // Black where equal, through red to yellow at 64 levels and more.

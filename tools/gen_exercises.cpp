@@ -44,8 +44,7 @@ std::string generate(const fs::path& source, const std::string& text) {
     static const std::regex end(R"(^\s*// @end\s*$)");
     std::istringstream in(text);
     std::ostringstream out;
-    out << "// STUDENT COPY of solutions/" << source.filename().string()
-        << ", made by tools/gen_exercises.cpp.\n"
+    out << "// STUDENT COPY of solutions/" << source.filename().string() << ", made by tools/gen_exercises.cpp.\n"
         << "// Write your code between each \"@exercise\" line and its \"@end\", in place of the throw.\n";
     std::string line;
     int number = 0, open_line = 0;
@@ -54,7 +53,9 @@ std::string generate(const fs::path& source, const std::string& text) {
         ++number;
         std::smatch m;
         if (std::regex_match(line, m, begin)) {
-            if (inside) throw Failure{source.string() + ":" + std::to_string(number) + ": @exercise inside another (opened at line " + std::to_string(open_line) + ")"};
+            if (inside)
+                throw Failure{source.string() + ":" + std::to_string(number) +
+                              ": @exercise inside another (opened at line " + std::to_string(open_line) + ")"};
             inside = true;
             open_line = number;
             out << line << '\n'
@@ -65,12 +66,14 @@ std::string generate(const fs::path& source, const std::string& text) {
             inside = false;
             out << line << '\n';
         } else if (line.find("@exercise") != std::string::npos && !inside) {
-            throw Failure{source.string() + ":" + std::to_string(number) + ": malformed marker; expected \"// @exercise N | name | book §S\""};
+            throw Failure{source.string() + ":" + std::to_string(number) +
+                          ": malformed marker; expected \"// @exercise N | name | book §S\""};
         } else if (!inside) {
             out << line << '\n';
         }
     }
-    if (inside) throw Failure{source.string() + ":" + std::to_string(open_line) + ": @exercise is never closed by @end"};
+    if (inside)
+        throw Failure{source.string() + ":" + std::to_string(open_line) + ": @exercise is never closed by @end"};
     return out.str();
 }
 
@@ -98,8 +101,7 @@ int main(int argc, char** argv) {
             const std::string have = fs::exists(dst) ? read_file(dst) : std::string();
             if (have == want) continue;
             if (check) {
-                std::cerr << dst.string() << " is out of date with " << src.string()
-                          << ": run ./lab exercises\n";
+                std::cerr << dst.string() << " is out of date with " << src.string() << ": run ./lab exercises\n";
                 ++stale;
             } else {
                 fs::create_directories(exercises);

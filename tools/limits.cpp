@@ -8,8 +8,8 @@ int main() {
     std::printf("[");
     bool first = true;
     for (const auto& r : rt::limits::all) {
-        std::printf("%s\n {\"name\": \"%s\", \"min\": %lld, \"max\": %lld, \"schema\": \"%s\"}", first ? "" : ",", r.name,
-                    r.min, r.max, r.schema);
+        std::printf("%s\n {\"name\": \"%s\", \"min\": %lld, \"max\": %lld, \"schema\": \"%s\"}", first ? "" : ",",
+                    r.name, r.min, r.max, r.schema);
         first = false;
     }
     std::printf("\n]\n");

@@ -1,7 +1,7 @@
 // Chapter 02: spheres, shaded by their unit normals.
 #include "app/app.hpp"
-#include "render/integrators.hpp"
 #include "geometry/sphere.hpp"
+#include "render/integrators.hpp"
 
 #include <memory>
 
@@ -17,12 +17,10 @@ static Scene sphere_scene(Projection projection, Vec3 eye, Vec3 center, Real rad
 
 int main(int argc, char** argv) {
     ChapterApp app("ch02", "Spheres");
-    app.add_scene("sphere", "a unit sphere 3 units in front of a perspective camera", [] {
-        return sphere_scene(Projection::perspective, Vec3(0, 0, 0), Vec3(0, 0, -3), 1, 45);
-    });
-    app.add_scene("sphere-orthographic", "the same sphere seen orthographically from off-axis", [] {
-        return sphere_scene(Projection::orthographic, Vec3(2, 1.5, 0), Vec3(0, 0, -3), 1, 45);
-    });
+    app.add_scene("sphere", "a unit sphere 3 units in front of a perspective camera",
+                  [] { return sphere_scene(Projection::perspective, Vec3(0, 0, 0), Vec3(0, 0, -3), 1, 45); });
+    app.add_scene("sphere-orthographic", "the same sphere seen orthographically from off-axis",
+                  [] { return sphere_scene(Projection::orthographic, Vec3(2, 1.5, 0), Vec3(0, 0, -3), 1, 45); });
     app.add_scene("far-sphere", "a unit sphere 10^4 radii away, framed by a narrow field of view", [] {
         // The textbook quadratic loses every digit here in float; the stable one does not.
         return sphere_scene(Projection::perspective, Vec3(0, 0, 0), Vec3(6000, 3000, -7416.198487095663), 1,

@@ -1,7 +1,7 @@
 // Chapter 04: polygons, convex and concave, facing along every axis.
 #include "app/app.hpp"
-#include "render/integrators.hpp"
 #include "geometry/polygon.hpp"
+#include "render/integrators.hpp"
 
 #include <cmath>
 #include <memory>
@@ -37,9 +37,10 @@ int main(int argc, char** argv) {
                          {"square", star(Vec3(0.6, -0.8, 0), X, Y, 4, 0.5, 0.5)}});
     });
     app.add_scene("concave", "a five-pointed star and an L shape: concave polygons", [=] {
-        return polygons(Vec3(0.3, 0.4, 5),
-                        {{"star", star(Vec3(-0.9, 0, 0), X, Y, 5, 1, 0.4)},
-                         {"L", {{0.4, -1, 0}, {1.6, -1, 0}, {1.6, -0.6, 0}, {0.8, -0.6, 0}, {0.8, 1, 0}, {0.4, 1, 0}}}});
+        return polygons(
+            Vec3(0.3, 0.4, 5),
+            {{"star", star(Vec3(-0.9, 0, 0), X, Y, 5, 1, 0.4)},
+             {"L", {{0.4, -1, 0}, {1.6, -1, 0}, {1.6, -0.6, 0}, {0.8, -0.6, 0}, {0.8, 1, 0}, {0.4, 1, 0}}}});
     });
     app.add_scene("axes", "three squares facing along x, y and z: each projects onto a different plane", [=] {
         return polygons(Vec3(3, 2.5, 3.5), {{"facing x", star(Vec3(-0.9, 0, 0), Y, Z, 4, 0.7, 0.7)},

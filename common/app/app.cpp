@@ -7,9 +7,9 @@
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
+#include <unistd.h>
 #include <cstdio>
 #include <iostream>
-#include <unistd.h>
 
 namespace rt {
 
@@ -17,7 +17,9 @@ namespace {
 
 using nlohmann::json;
 
-json to_json(const Vec3& v) { return json::array({v.x, v.y, v.z}); }
+json to_json(const Vec3& v) {
+    return json::array({v.x, v.y, v.z});
+}
 
 json pick_json(const SceneEntry& entry, const Scene& scene, int x, int y, const Pick& p) {
     json j{{"scene", entry.name},
@@ -39,8 +41,8 @@ json pick_json(const SceneEntry& entry, const Scene& scene, int x, int y, const 
     return j;
 }
 
-json stats_json(const std::string& chapter, const SceneEntry& entry, const RenderOptions& o,
-                const RenderResult& r, const SceneSummary& s) {
+json stats_json(const std::string& chapter, const SceneEntry& entry, const RenderOptions& o, const RenderResult& r,
+                const SceneSummary& s) {
     const double mrays = r.seconds > 0 ? double(r.counters.total()) / r.seconds / 1e6 : 0.0;
     json rays{{"total", r.counters.total()}};
     for (std::size_t k = 0; k < kRayKinds; ++k) rays[kRayKindNames[k]] = r.counters.rays[k];
@@ -56,9 +58,10 @@ json stats_json(const std::string& chapter, const SceneEntry& entry, const Rende
            {"seconds", r.seconds},
            {"mrays_per_s", mrays}};
     if (s.from_file) {  // what loading the scene file kept, and what it left out
-        j["scene_kept"] = {{"surfaces", s.surfaces}, {"triangles", s.triangles}, {"lights", s.lights},
-                           {"materials", s.materials}};
-        j["scene_skipped"] = {{"black_lights", s.lights_black}, {"unused_materials", s.materials_unused},
+        j["scene_kept"] = {
+            {"surfaces", s.surfaces}, {"triangles", s.triangles}, {"lights", s.lights}, {"materials", s.materials}};
+        j["scene_skipped"] = {{"black_lights", s.lights_black},
+                              {"unused_materials", s.materials_unused},
                               {"degenerate_triangles", s.degenerate_triangles}};
     }
     return j;
@@ -112,8 +115,8 @@ int ChapterApp::run(int argc, char** argv) const {
         entry = &file_entry;
     }
     if (!entry) {
-        std::fprintf(stderr, "%s: error: --scene: unknown scene '%s' (see --list-scenes, or give a FILE.json)\n", id_.c_str(),
-                     scene_name.c_str());
+        std::fprintf(stderr, "%s: error: --scene: unknown scene '%s' (see --list-scenes, or give a FILE.json)\n",
+                     id_.c_str(), scene_name.c_str());
         return 2;
     }
     if (output.empty()) output = "out/" + id_ + "/" + entry->name + ".png";

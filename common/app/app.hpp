@@ -21,8 +21,8 @@ public:
     ChapterApp(std::string id, std::string title) : id_(std::move(id)), title_(std::move(title)) {}
 
     void add_scene(std::string name, std::string description, std::function<Scene()> build) {
-        scenes_.push_back({std::move(name), std::move(description),
-                           [b = std::move(build)](SceneSummary&) { return b(); }});
+        scenes_.push_back(
+            {std::move(name), std::move(description), [b = std::move(build)](SceneSummary&) { return b(); }});
     }
     // A scene kept as a JSON file beside the chapter (see chapters/*/scenes/).
     void add_scene_file(std::string name, std::string path) {

@@ -19,6 +19,8 @@ using Color = glm::vec3;  // linear RGB
 
 inline constexpr Real kInfinity = std::numeric_limits<Real>::infinity();
 
-inline const char* real_name() { return sizeof(Real) == sizeof(float) ? "float" : "double"; }
+inline const char* real_name() {
+    return sizeof(Real) == sizeof(float) ? "float" : "double";
+}
 
 }  // namespace rt

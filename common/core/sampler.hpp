@@ -22,8 +22,7 @@ inline constexpr std::size_t kDimensions = 6;
 class Sampler {
 public:
     Sampler(std::uint64_t seed, std::uint64_t pixel_index) {
-        for (std::size_t d = 0; d < kDimensions; ++d)
-            streams_[d] = pcg32(seed, pixel_index * kDimensions + d);
+        for (std::size_t d = 0; d < kDimensions; ++d) streams_[d] = pcg32(seed, pixel_index * kDimensions + d);
     }
 
     // Starts sample `index` of this pixel's samples (0, 1, ..., spp - 1).
@@ -42,8 +41,7 @@ private:
         // 24 (or 53) random bits: exactly representable, never rounds up to 1.
         if constexpr (sizeof(Real) == sizeof(float))
             return Real(rng() >> 8) * Real(0x1p-24);
-        else
-        {
+        else {
             // Two statements: the operands of one expression would be drawn in an order
             // the compiler picks.
             const std::uint64_t high = rng();

@@ -42,8 +42,7 @@ bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
     for (std::size_t k = 0; k < d.triangles.size(); ++k) {
         const auto& tri = d.triangles[k];
         TriangleHit h;
-        if (ray_triangle_watertight(ray, d.positions[tri[0]], d.positions[tri[1]], d.positions[tri[2]], interval,
-                                    h)) {
+        if (ray_triangle_watertight(ray, d.positions[tri[0]], d.positions[tri[1]], d.positions[tri[2]], interval, h)) {
             result = MeshHit{h, std::uint32_t(k)};
             interval.max = h.t;  // only closer hits from here on
             found = true;

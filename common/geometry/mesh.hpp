@@ -49,6 +49,8 @@ bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result);
 // True as soon as any triangle is hit in the interval: shadow rays need no closest hit.
 bool occluded(const Mesh& mesh, const Ray& ray, Interval interval);
 HitRecord record(const Mesh& mesh, const Ray& ray, const MeshHit& h, SurfaceRef who = {});
-inline Box bounding_box(const Mesh& mesh) { return mesh.box(); }
+inline Box bounding_box(const Mesh& mesh) {
+    return mesh.box();
+}
 
 }  // namespace rt

@@ -26,13 +26,13 @@ bool inside_polygon_2d(const std::vector<Vec2>& polygon, const Vec2& p);
 // A planar polygon: geometry only, with what every ray test needs computed once.
 class Polygon {
 public:
-    // Throws std::invalid_argument for fewer than three or more than kPolygonVerticesMax
+    // Throws std::invalid_argument for fewer than three or more than limits::polygon_vertices.max
     // vertices, non-finite or repeated vertices, zero area, or vertices off a common plane.
     explicit Polygon(std::vector<Vec3> vertices);
 
     const std::vector<Vec3>& vertices() const { return vertices_; }
-    const Vec3& normal() const { return normal_; }                   // unit, Newell's method
-    const std::array<int, 2>& axes() const { return axes_; }          // projection_axes(normal())
+    const Vec3& normal() const { return normal_; }                     // unit, Newell's method
+    const std::array<int, 2>& axes() const { return axes_; }           // projection_axes(normal())
     const std::vector<Vec2>& projected() const { return projected_; }  // the vertices in those axes
 
 private:

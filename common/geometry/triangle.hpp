@@ -15,8 +15,7 @@ struct TriangleHit {
 
 // Exercise 3.1: Cramer's rule with the shared sub-terms and the course's early exits
 // (t, then gamma, then beta). True if t is in the interval and the point is in the triangle.
-bool ray_triangle(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c, Interval interval,
-                  TriangleHit& result);
+bool ray_triangle(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c, Interval interval, TriangleHit& result);
 
 // Exercise 3.2: the watertight test of Woop, Benthin and Wald (2013). A ray through an edge
 // or vertex shared by two triangles (bit-identical vertices) hits at least one of them.

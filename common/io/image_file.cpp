@@ -3,6 +3,7 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include <unistd.h>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
@@ -11,7 +12,6 @@
 #include <fstream>
 #include <sstream>
 #include <stdexcept>
-#include <unistd.h>
 
 namespace rt {
 
@@ -21,7 +21,8 @@ void write_file_atomically(const std::string& path, const std::string& bytes) {
     if (target.has_parent_path()) {
         std::error_code ec;
         fs::create_directories(target.parent_path(), ec);
-        if (ec) throw std::runtime_error("cannot create directory " + target.parent_path().string() + ": " + ec.message());
+        if (ec)
+            throw std::runtime_error("cannot create directory " + target.parent_path().string() + ": " + ec.message());
     }
     // The temporary lives in the target's directory so that rename() stays atomic.
     const std::string tmp = path + ".tmp." + std::to_string(::getpid());
@@ -57,8 +58,7 @@ void write_png(const Image& image, const std::string& path) {
             bytes[3 * i + std::size_t(c)] =
                 static_cast<unsigned char>(std::lround(255.0f * linear_to_srgb(image.pixels[i][c])));
     std::string encoded;
-    if (!stbi_write_png_to_func(append_bytes, &encoded, image.width, image.height, 3, bytes.data(),
-                                image.width * 3))
+    if (!stbi_write_png_to_func(append_bytes, &encoded, image.width, image.height, 3, bytes.data(), image.width * 3))
         throw std::runtime_error("cannot encode PNG for " + path);
     write_file_atomically(path, encoded);
 }

@@ -43,13 +43,21 @@ void Fields::only(const std::vector<const char*>& allowed) const {
         reader_.fail(pointer_ + "/" + key, "unknown key '" + key + "' (expected one of: " + list + ")");
     }
 }
-void Fields::only(std::initializer_list<const char*> allowed) const { only(std::vector<const char*>(allowed)); }
+void Fields::only(std::initializer_list<const char*> allowed) const {
+    only(std::vector<const char*>(allowed));
+}
 
-bool Fields::has(const char* key) const { return object_.contains(key); }
+bool Fields::has(const char* key) const {
+    return object_.contains(key);
+}
 
-std::string Fields::pointer(const char* key) const { return *key ? pointer_ + "/" + key : pointer_; }
+std::string Fields::pointer(const char* key) const {
+    return *key ? pointer_ + "/" + key : pointer_;
+}
 
-void Fields::fail(const char* key, const std::string& message) const { reader_.fail(pointer(key), message); }
+void Fields::fail(const char* key, const std::string& message) const {
+    reader_.fail(pointer(key), message);
+}
 
 const json& Fields::need(const char* key) const {
     if (!object_.contains(key)) reader_.fail(pointer_, std::string("missing key '") + key + "'");
@@ -71,23 +79,29 @@ Real Fields::number_at(const json& v, const std::string& ptr) const {
     if (!std::isfinite(d)) reader_.fail(ptr, "must be finite");
     return Real(d);
 }
-Real Fields::number(const char* key) const { return number_at(need(key), pointer(key)); }
-Real Fields::number(const char* key, Real fallback) const { return has(key) ? number(key) : fallback; }
+Real Fields::number(const char* key) const {
+    return number_at(need(key), pointer(key));
+}
+Real Fields::number(const char* key, Real fallback) const {
+    return has(key) ? number(key) : fallback;
+}
 
 Real Fields::positive(const char* key) const {
     const Real v = number(key);
     if (!(v > 0)) fail(key, "must be > 0");
     return v;
 }
-Real Fields::positive(const char* key, Real fallback) const { return has(key) ? positive(key) : fallback; }
+Real Fields::positive(const char* key, Real fallback) const {
+    return has(key) ? positive(key) : fallback;
+}
 
 int Fields::integer(const char* key, const limits::Range& range) const {
     const json& v = need(key);
     if (!v.is_number_integer()) fail(key, "must be a whole number");
     const auto n = v.get<long long>();
     if (n < range.min || n > range.max)
-        fail(key, std::string(range.name) + " must be in " + std::to_string(range.min) + ".." +
-                      std::to_string(range.max));
+        fail(key,
+             std::string(range.name) + " must be in " + std::to_string(range.min) + ".." + std::to_string(range.max));
     return int(n);
 }
 int Fields::integer(const char* key, const limits::Range& range, int fallback) const {
@@ -98,8 +112,12 @@ Vec3 Fields::vec3_at(const json& v, const std::string& ptr) const {
     if (!v.is_array() || v.size() != 3) reader_.fail(ptr, "must be an array of 3 numbers");
     return Vec3(number_at(v[0], ptr + "/0"), number_at(v[1], ptr + "/1"), number_at(v[2], ptr + "/2"));
 }
-Vec3 Fields::vec3(const char* key) const { return vec3_at(need(key), pointer(key)); }
-Vec3 Fields::vec3(const char* key, const Vec3& fallback) const { return has(key) ? vec3(key) : fallback; }
+Vec3 Fields::vec3(const char* key) const {
+    return vec3_at(need(key), pointer(key));
+}
+Vec3 Fields::vec3(const char* key, const Vec3& fallback) const {
+    return has(key) ? vec3(key) : fallback;
+}
 
 Color Fields::color(const char* key, const Color& fallback) const {
     if (!has(key)) return fallback;
@@ -114,8 +132,8 @@ std::vector<Vec3> Fields::points(const char* key, const limits::Range& range) co
     if (!v.is_array()) fail(key, "must be an array of points");
     if (v.size() < lo || v.size() > hi)
         fail(key, lo == hi ? "must be an array of " + std::to_string(lo) + " points"
-                           : "must be an array of " + std::to_string(lo) + ".." + std::to_string(hi) +
-                                 " points (" + range.name + "), not " + std::to_string(v.size()));
+                           : "must be an array of " + std::to_string(lo) + ".." + std::to_string(hi) + " points (" +
+                                 range.name + "), not " + std::to_string(v.size()));
     std::vector<Vec3> result;
     result.reserve(v.size());
     for (std::size_t i = 0; i < v.size(); ++i) result.push_back(vec3_at(v[i], pointer(key) + "/" + std::to_string(i)));

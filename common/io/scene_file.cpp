@@ -21,7 +21,8 @@ Camera read_camera(const Fields& f) {
     f.only({"projection", "eye", "target", "up", "fov", "window_height", "focal_distance"});
     Camera cam;
     const std::string projection = f.text("projection", "perspective");
-    if (projection == "orthographic") cam.projection = Projection::orthographic;
+    if (projection == "orthographic")
+        cam.projection = Projection::orthographic;
     else if (projection != "perspective")
         f.fail("projection", "must be \"perspective\" or \"orthographic\", not \"" + projection + "\"");
     cam.eye = f.vec3("eye");
@@ -90,8 +91,8 @@ Scene load_scene_text(const std::string& text, const std::string& filename, cons
     const json doc = parse(text, filename);
     const JsonReader reader(text, filename, base_dir);
     const Fields top(reader, doc, "");
-    top.only({"$schema", "description", "camera", "shading", "background", "ambient", "materials", "lights",
-              "surfaces"});
+    top.only(
+        {"$schema", "description", "camera", "shading", "background", "ambient", "materials", "lights", "surfaces"});
     SceneSummary summary;
     summary.from_file = true;
     Scene scene;

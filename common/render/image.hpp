@@ -16,9 +16,7 @@ struct Image {
     Image(int w, int h) : width(w), height(h), pixels(std::size_t(w) * std::size_t(h), Color(0)) {}
 
     Color& at(int x, int y) { return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
-    const Color& at(int x, int y) const {
-        return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)];
-    }
+    const Color& at(int x, int y) const { return pixels[std::size_t(y) * std::size_t(width) + std::size_t(x)]; }
 };
 
 // sRGB transfer function, per channel; inputs are clamped to [0, 1].

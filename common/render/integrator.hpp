@@ -15,8 +15,8 @@ struct Scene;
 struct TraceContext {
     Sampler& sampler;
     RayCounters& counters;
-    int depth = 0;                  // 0 for a camera ray, +1 per bounce
-    RayKind kind = RayKind::camera; // why this ray was cast
+    int depth = 0;                   // 0 for a camera ray, +1 per bounce
+    RayKind kind = RayKind::camera;  // why this ray was cast
 
     TraceContext child(RayKind k) const { return TraceContext{sampler, counters, depth + 1, k}; }
 };

@@ -107,11 +107,12 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
     const int threads = o.threads > 0 ? o.threads : tbb::this_task_arena::max_concurrency();
     tbb::task_arena arena(threads);
     arena.execute([&] {
-        tbb::parallel_for(tbb::blocked_range<int>(0, tiles, 1),
-                          [&](const tbb::blocked_range<int>& r) {
-                              for (int t = r.begin(); t != r.end(); ++t) render_tile(t);
-                          },
-                          tbb::simple_partitioner());
+        tbb::parallel_for(
+            tbb::blocked_range<int>(0, tiles, 1),
+            [&](const tbb::blocked_range<int>& r) {
+                for (int t = r.begin(); t != r.end(); ++t) render_tile(t);
+            },
+            tbb::simple_partitioner());
     });
     progress.finish();
     result.seconds = progress.seconds();
@@ -122,9 +123,8 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
 Pick pick(const Scene& scene, const RenderOptions& o, int x, int y) {
     check(scene, o);
     if (x < 0 || x >= o.width || y < 0 || y >= o.height)
-        throw std::invalid_argument("pick: pixel " + std::to_string(x) + "," + std::to_string(y) +
-                                    " is outside the " + std::to_string(o.width) + "x" +
-                                    std::to_string(o.height) + " image");
+        throw std::invalid_argument("pick: pixel " + std::to_string(x) + "," + std::to_string(y) + " is outside the " +
+                                    std::to_string(o.width) + "x" + std::to_string(o.height) + " image");
     const View view = scene.camera.view(o.width, o.height);
     Pick result{view.pixel_ray(x, o.height - 1 - y), std::nullopt};
     HitRecord rec;

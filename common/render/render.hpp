@@ -10,7 +10,7 @@ namespace rt {
 struct RenderOptions {
     int width = 400;
     int height = 300;
-    int spp = 1;             // samples per pixel; 1 = the pixel centre, as in §9.2
+    int spp = 1;             // samples per pixel; 1 = the pixel centre, as in course §9.2
     std::uint64_t seed = 0;  // selects every pixel's random stream
     int threads = 0;         // 0 = all cores
     bool progress = false;   // progress bar on stderr

@@ -10,7 +10,7 @@ Color lambert(const Color& diffuse, const Color& light, const Vec3& n, const Vec
 
 // Exercise 5.3: the Blinn-Phong highlight from one light, c_l c_p max(0, n . h)^p with h the
 // unit half vector between l and v (towards the light and towards the eye, both unit).
-Color blinn_phong_highlight(const Color& specular, float exponent, const Color& light, const Vec3& n,
-                            const Vec3& l, const Vec3& v);
+Color blinn_phong_highlight(const Color& specular, float exponent, const Color& light, const Vec3& n, const Vec3& l,
+                            const Vec3& v);
 
 }  // namespace rt

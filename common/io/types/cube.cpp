@@ -5,8 +5,8 @@
 namespace rt {
 
 Shape read_cube(const Fields& f) {
-    return Mesh(subdivided_cube(f.vec3("center"), f.positive("size"),
-                                f.integer("subdivisions", limits::cube_subdivisions, 1)));
+    return Mesh(
+        subdivided_cube(f.vec3("center"), f.positive("size"), f.integer("subdivisions", limits::cube_subdivisions, 1)));
 }
 
 }  // namespace rt

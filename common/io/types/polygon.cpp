@@ -3,6 +3,8 @@
 
 namespace rt {
 
-Shape read_polygon(const Fields& f) { return Polygon(f.points("vertices", limits::polygon_vertices)); }
+Shape read_polygon(const Fields& f) {
+    return Polygon(f.points("vertices", limits::polygon_vertices));
+}
 
 }  // namespace rt

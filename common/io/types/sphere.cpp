@@ -3,6 +3,8 @@
 
 namespace rt {
 
-Shape read_sphere(const Fields& f) { return Sphere(f.vec3("center"), f.positive("radius")); }
+Shape read_sphere(const Fields& f) {
+    return Sphere(f.vec3("center"), f.positive("radius"));
+}
 
 }  // namespace rt
