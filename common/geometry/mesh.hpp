@@ -20,6 +20,12 @@ struct MeshData {
 // non-finite position, no triangles.
 void validate(const MeshData& mesh, const std::string& what);
 
+// Which triangle a ray met, and where.
+struct MeshHit {
+    TriangleHit triangle;
+    std::uint32_t index;
+};
+
 // A mesh: geometry only. Its data is shared, so copies of a Mesh (two surfaces wearing
 // different materials, later two instances) cost one pointer, not a copy of the triangles.
 // Until the acceleration chapters, a ray tests every triangle: the brute-force search of
@@ -27,6 +33,8 @@ void validate(const MeshData& mesh, const std::string& what);
 // nothing per ray.
 class Mesh {
 public:
+    using Hit = MeshHit;
+
     explicit Mesh(MeshData data);
 
     const MeshData& data() const { return *data_; }
@@ -37,12 +45,6 @@ private:
     std::shared_ptr<const MeshData> data_;
     std::size_t dropped_ = 0;
     Box box_;
-};
-
-// Which triangle a ray met, and where.
-struct MeshHit {
-    TriangleHit triangle;
-    std::uint32_t index;
 };
 
 bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result);

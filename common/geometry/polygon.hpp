@@ -23,9 +23,16 @@ std::array<int, 2> projection_axes(const Vec3& n);
 // claim each point of it exactly once: no gaps, no double hits (book §4.3).
 bool inside_polygon_2d(const std::vector<Vec2>& polygon, const Vec2& p);
 
+// What the polygon test finds.
+struct PolygonHit {
+    Real t;
+};
+
 // A planar polygon: geometry only, with what every ray test needs computed once.
 class Polygon {
 public:
+    using Hit = PolygonHit;
+
     // Throws std::invalid_argument for fewer than three or more than limits::polygon_vertices.max
     // vertices, non-finite or repeated vertices, zero area, or vertices off a common plane.
     explicit Polygon(std::vector<Vec3> vertices);
@@ -40,11 +47,6 @@ private:
     Vec3 normal_;
     std::array<int, 2> axes_;
     std::vector<Vec2> projected_;
-};
-
-// What the polygon test finds.
-struct PolygonHit {
-    Real t;
 };
 
 // Exercise 4.3: the plane hit, then the 2D test in the polygon's projection. True and

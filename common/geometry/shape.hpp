@@ -19,33 +19,11 @@ inline const char* shape_kind(const Shape& shape) {
     return names[shape.index()];
 }
 
-// What each kind's own test reports.
-template <class S>
-struct SmallHitOf;
-template <>
-struct SmallHitOf<Sphere> {
-    using type = SphereHit;
-};
-template <>
-struct SmallHitOf<Triangle> {
-    using type = TriangleHit;
-};
-template <>
-struct SmallHitOf<Polygon> {
-    using type = PolygonHit;
-};
-template <>
-struct SmallHitOf<Mesh> {
-    using type = MeshHit;
-};
-template <class S>
-using SmallHit = typename SmallHitOf<S>::type;
-
 // The closest hit of one shape in the interval, as a whole record owned by `who`. The
 // shape's own test finds the small result; `record` builds everything else from it.
 template <class S>
 bool hit_record(const S& shape, const Ray& ray, Interval interval, SurfaceRef who, HitRecord& rec) {
-    SmallHit<S> h;
+    typename S::Hit h;  // SphereHit, TriangleHit, PolygonHit or MeshHit
     if (!hit(shape, ray, interval, h)) return false;
     rec = record(shape, ray, h, who);
     return true;
@@ -58,7 +36,7 @@ inline bool hit_record(const Shape& shape, const Ray& ray, Interval interval, Su
 // Any hit in the interval: what a shadow ray asks. A mesh stops at its first triangle.
 template <class S>
 bool occluded(const S& shape, const Ray& ray, Interval interval) {
-    SmallHit<S> h;
+    typename S::Hit h;  // SphereHit, TriangleHit, PolygonHit or MeshHit
     return hit(shape, ray, interval, h);
 }
 bool occluded(const Mesh& mesh, const Ray& ray, Interval interval);

@@ -8,18 +8,20 @@
 
 namespace rt {
 
+// What the sphere test finds: the ray parameter, and nothing the library cannot derive.
+struct SphereHit {
+    Real t;
+};
+
 // A sphere: geometry only. What it is made of is bound to it by a Surface.
 struct Sphere {
+    using Hit = SphereHit;  // what its test reports
+
     Vec3 center;
     Real radius;
 
     // Throws std::invalid_argument unless the centre is finite and the radius > 0.
     Sphere(const Vec3& center, Real radius);
-};
-
-// What the sphere test finds: the ray parameter, and nothing the library cannot derive.
-struct SphereHit {
-    Real t;
 };
 
 // Both roots of |e + t d - c|^2 = R^2, t_near <= t_far. False when the line misses

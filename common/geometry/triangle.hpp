@@ -39,6 +39,8 @@ HitRecord triangle_record(const Vec3& a, const Vec3& b, const Vec3& c, const Tri
 
 // One triangle: geometry only.
 struct Triangle {
+    using Hit = TriangleHit;
+
     Vec3 a, b, c;
 
     // Throws std::invalid_argument for a degenerate (zero-area) or non-finite triangle.
