@@ -61,14 +61,17 @@ TEST_CASE("4.2 crossing number: convex, concave, either winding") {
     const auto star = star2d(5, 1, 0.35);
     pcg32 rng(9);
     std::uniform_real_distribution<double> u(-1.1, 1.1);
-    int inside = 0;
+    int inside = 0, failures = 0;
     for (int k = 0; k < 20000; ++k) {
         const Vec2 p(Real(u(rng)), Real(u(rng)));
         const bool want = winding_number(star, p) != 0;
-        CHECK(inside_polygon_2d(star, p) == want);
+        CAPTURE(p);
+        CAPTURE(want);
+        RT_CHECK_FIRST(failures, inside_polygon_2d(star, p) == want);
         inside += want;
     }
     CHECK(inside > 2000);
+    CHECK(failures == 0);
 }
 
 TEST_CASE("4.2 the boundary rule: each point of a shared edge belongs to exactly one polygon") {
@@ -144,7 +147,7 @@ TEST_CASE("4.3 hit(Polygon) for polygons facing along each axis") {
 TEST_CASE("stress: random regular polygons at scales 1e-3 to 1e3") {
     pcg32 rng(21);
     std::uniform_real_distribution<double> u(0, 1);
-    int checked = 0;
+    int checked = 0, failures = 0;
     for (double scale : {1e-3, 1.0, 1e3}) {
         for (int k = 0; k < 200; ++k) {
             const int n = 3 + int(u(rng) * 8);
@@ -166,13 +169,19 @@ TEST_CASE("stress: random regular polygons at scales 1e-3 to 1e3") {
                 const Vec3 out = center + Real(1.01 * scale) * dir2;
                 const Vec3 eye = center + Real(3 * scale) * (axis + Real(0.3) * a);
                 PolygonHit h{-1};
-                CHECK(hit(poly, Ray{eye, in - eye}, Interval{}, h));
-                CHECK(h.t == doctest::Approx(1).epsilon(1e3 * kEps));
-                CHECK_FALSE(hit(poly, Ray{eye, out - eye}, Interval{}, h));
+                CAPTURE(scale);
+                CAPTURE(n);
+                CAPTURE(eye);
+                CAPTURE(in);
+                CAPTURE(out);
+                RT_CHECK_FIRST(failures, hit(poly, Ray{eye, in - eye}, Interval{}, h));
+                RT_CHECK_FIRST(failures, h.t == doctest::Approx(1).epsilon(1e3 * kEps));
+                RT_CHECK_FIRST(failures, !hit(poly, Ray{eye, out - eye}, Interval{}, h));
                 ++checked;
             }
         }
     }
     CHECK(checked == 3 * 200 * 10);
+    CHECK(failures == 0);
 }
 }  // TEST_SUITE("ch04")

@@ -157,7 +157,7 @@ TEST_CASE("analytic: a Lambertian sphere under one directional light, orthograph
     const Image img = render(scene, o).image;
     const Vec3 l = glm::normalize(Vec3(1, 1, 1));
     const Color cr(0.8f, 0.6f, 0.4f);
-    int checked = 0, covered = 0;
+    int checked = 0, covered = 0, failures = 0;
     for (int y = 0; y < 120; ++y)
         for (int x = 0; x < 120; ++x) {
             const double wx = -1.5 + 3.0 * (x + 0.5) / 120, wy = 1.5 - 3.0 * (y + 0.5) / 120;
@@ -166,11 +166,15 @@ TEST_CASE("analytic: a Lambertian sphere under one directional light, orthograph
             if (r2 > 0.98) continue;  // leave the silhouette to the area check
             const Vec3 n(Real(wx), Real(wy), Real(std::sqrt(1 - r2)));
             const float lit = float(std::max(0.0, double(glm::dot(n, l))));
+            CAPTURE(x);
+            CAPTURE(y);
+            CAPTURE(img.at(x, y));
             for (int c = 0; c < 3; ++c)
-                CHECK(img.at(x, y)[c] == doctest::Approx(cr[c] * 0.1f + cr[c] * lit).epsilon(1e-4));
+                RT_CHECK_FIRST(failures, img.at(x, y)[c] == doctest::Approx(cr[c] * 0.1f + cr[c] * lit).epsilon(1e-4));
             ++checked;
         }
     CHECK(checked > 4500);
+    CHECK(failures == 0);
     // The silhouette: pi R^2 in pixels, to within the pixels its boundary crosses.
     const double area = M_PI / std::pow(3.0 / 120, 2), perimeter = 2 * M_PI / (3.0 / 120);
     MESSAGE("covered " << covered << " pixels, disk " << area << ", perimeter " << perimeter);

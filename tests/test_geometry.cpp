@@ -56,8 +56,11 @@ TEST_CASE("degenerate polygons are rejected with a clear error") {
                          std::invalid_argument);
     CHECK_THROWS_WITH_AS(Polygon({{0, 0, 0}, {1, 0, 0}, {1, 0, 0}, {0, 1, 0}}), doctest::Contains("same point"),
                          std::invalid_argument);
-    CHECK_THROWS_WITH_AS(Polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0.5}, {0, 1, 0}}), doctest::Contains("off the plane"),
+    CHECK_THROWS_WITH_AS(Polygon({{0, 0, 0}, {1, 0, 0}, {1, 1, 0.5}, {0, 1, 0}}), doctest::Contains("is off the plane"),
                          std::invalid_argument);
     CHECK_THROWS_AS(Polygon({{0, 0, 0}, {1, 0, 0}, {0, std::nan(""), 0}}), std::invalid_argument);
+    // The vertex named is the one off the plane, even when it is the first.
+    CHECK_THROWS_WITH_AS(Polygon({{0, 0, 0.5}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 1.5, 0}}),
+                         doctest::Contains("vertex 0 is off the plane"), std::invalid_argument);
 }
 }  // TEST_SUITE("common")

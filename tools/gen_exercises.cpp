@@ -8,11 +8,24 @@
 // becomes the same two marker lines around
 //   throw NotImplemented("exercise 2.2 (sphere_roots) is not done yet: see book §2.3");
 //
-// With --check nothing is written; the exit code is 1 if any committed copy differs.
+// A student's work is never lost. The generator owns everything outside the regions; the
+// bodies inside belong to whoever wrote them:
+// - Regenerating keeps every body that differs from its stub, by exercise number, and
+//   writes the generator's text around it.
+// - If the text outside the regions changed (an instructor's update, or a student's edit
+//   there), the old file is first copied to FILE.orig.
+// - If a body a student wrote has no region left to go to (the exercise was renumbered or
+//   removed), nothing is written: the file is named and the exit code is 3, unless --force,
+//   which writes FILE.orig first.
+// With --check nothing is written: the exit code is 1 if the text outside the regions of
+// any committed copy differs from what the generator makes (bodies are not compared).
+//
+//   rtlab-genex SOLUTIONS_DIR EXERCISES_DIR [--check] [--force]
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
 #include <iostream>
+#include <map>
 #include <regex>
 #include <sstream>
 #include <string>
@@ -34,57 +47,107 @@ std::string read_file(const fs::path& p) {
     return s.str();
 }
 
+void write_file(const fs::path& p, const std::string& text) {
+    std::ofstream out(p, std::ios::binary);
+    out << text;
+    if (!out.flush()) throw Failure{"cannot write " + p.string()};
+}
+
 std::string trim(const std::string& s) {
     const auto b = s.find_first_not_of(" \t"), e = s.find_last_not_of(" \t");
     return b == std::string::npos ? "" : s.substr(b, e - b + 1);
 }
 
-std::string generate(const fs::path& source, const std::string& text) {
-    static const std::regex begin(R"(^(\s*)// @exercise\s+(\S+)\s*\|\s*([^|]+?)\s*\|\s*(.+?)\s*$)");
-    static const std::regex end(R"(^\s*// @end\s*$)");
+const std::regex kBegin(R"(^(\s*)// @exercise\s+(\S+)\s*\|\s*([^|]+?)\s*\|\s*(.+?)\s*$)");
+const std::regex kEnd(R"(^\s*// @end\s*$)");
+
+// A file cut at its exercise regions: the text outside (with a placeholder line where each
+// body was) and the bodies, by exercise number.
+struct Parsed {
+    std::string outside;
+    std::vector<std::string> order;            // exercise numbers, in file order
+    std::map<std::string, std::string> body;  // number -> the lines between the markers
+};
+
+Parsed parse(const std::string& name, const std::string& text) {
+    Parsed p;
     std::istringstream in(text);
-    std::ostringstream out;
-    out << "// STUDENT COPY of solutions/" << source.filename().string() << ", made by tools/gen_exercises.cpp.\n"
-        << "// Write your code between each \"@exercise\" line and its \"@end\", in place of the throw.\n";
-    std::string line;
+    std::string line, id;
     int number = 0, open_line = 0;
     bool inside = false;
     while (std::getline(in, line)) {
         ++number;
         std::smatch m;
-        if (std::regex_match(line, m, begin)) {
+        if (std::regex_match(line, m, kBegin)) {
             if (inside)
-                throw Failure{source.string() + ":" + std::to_string(number) +
-                              ": @exercise inside another (opened at line " + std::to_string(open_line) + ")"};
+                throw Failure{name + ":" + std::to_string(number) + ": @exercise inside another (opened at line " +
+                              std::to_string(open_line) + ")"};
             inside = true;
             open_line = number;
-            out << line << '\n'
-                << m[1].str() << "throw NotImplemented(\"exercise " << m[2].str() << " (" << trim(m[3].str())
-                << ") is not done yet: see " << m[4].str() << "\");\n";
-        } else if (std::regex_match(line, end)) {
-            if (!inside) throw Failure{source.string() + ":" + std::to_string(number) + ": @end without @exercise"};
+            id = m[2].str();
+            if (p.body.count(id)) throw Failure{name + ":" + std::to_string(number) + ": exercise " + id + " twice"};
+            p.order.push_back(id);
+            p.body[id];
+            p.outside += line + "\n\x01\n";  // where the body goes
+        } else if (std::regex_match(line, kEnd)) {
+            if (!inside) throw Failure{name + ":" + std::to_string(number) + ": @end without @exercise"};
             inside = false;
-            out << line << '\n';
-        } else if (line.find("@exercise") != std::string::npos && !inside) {
-            throw Failure{source.string() + ":" + std::to_string(number) +
+            p.outside += line + '\n';
+        } else if (inside) {
+            p.body[id] += line + '\n';
+        } else if (line.find("@exercise") != std::string::npos) {
+            throw Failure{name + ":" + std::to_string(number) +
                           ": malformed marker; expected \"// @exercise N | name | book §S\""};
-        } else if (!inside) {
-            out << line << '\n';
+        } else {
+            p.outside += line + '\n';
         }
     }
-    if (inside)
-        throw Failure{source.string() + ":" + std::to_string(open_line) + ": @exercise is never closed by @end"};
-    return out.str();
+    if (inside) throw Failure{name + ":" + std::to_string(open_line) + ": @exercise is never closed by @end"};
+    return p;
+}
+
+// The student copy of a solution: its outside text and the stub bodies.
+Parsed generate(const fs::path& source, const std::string& text) {
+    Parsed solution = parse(source.string(), text);
+    std::istringstream in(text);
+    for (std::string line; std::getline(in, line);) {
+        std::smatch m;
+        if (std::regex_match(line, m, kBegin))
+            solution.body[m[2].str()] = m[1].str() + "throw NotImplemented(\"exercise " + m[2].str() + " (" +
+                                        trim(m[3].str()) + ") is not done yet: see " + m[4].str() + "\");\n";
+    }
+    solution.outside = "// STUDENT COPY of solutions/" + source.filename().string() +
+                       ", made by tools/gen_exercises.cpp.\n"
+                       "// Write your code between each \"@exercise\" line and its \"@end\", in place of the throw.\n"
+                       "// Only those lines are yours: ./lab exercises keeps them and rewrites the rest.\n" +
+                       solution.outside;
+    return solution;
+}
+
+std::string assemble(const Parsed& p, const std::map<std::string, std::string>& bodies) {
+    std::string out;
+    std::size_t k = 0, at = 0;
+    while (true) {
+        const auto hole = p.outside.find("\n\x01\n", at);
+        if (hole == std::string::npos) break;
+        out += p.outside.substr(at, hole + 1 - at) + bodies.at(p.order[k++]);
+        at = hole + 3;
+    }
+    return out + p.outside.substr(at);
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
     std::vector<std::string> args(argv + 1, argv + argc);
-    const bool check = std::find(args.begin(), args.end(), "--check") != args.end();
-    args.erase(std::remove(args.begin(), args.end(), "--check"), args.end());
+    auto flag = [&](const char* name) {
+        const bool on = std::find(args.begin(), args.end(), name) != args.end();
+        args.erase(std::remove(args.begin(), args.end(), name), args.end());
+        return on;
+    };
+    const bool check = flag("--check"), force = flag("--force");
     if (args.size() != 2) {
-        std::cerr << "usage: rtlab-genex SOLUTIONS_DIR EXERCISES_DIR [--check]\n";
+        std::cerr << "usage: rtlab-genex SOLUTIONS_DIR EXERCISES_DIR [--check] [--force]\n";
         return 2;
     }
     const fs::path solutions(args[0]), exercises(args[1]);
@@ -94,20 +157,62 @@ int main(int argc, char** argv) {
         for (const auto& e : fs::directory_iterator(solutions))
             if (e.path().extension() == ".cpp") sources.push_back(e.path());
         std::sort(sources.begin(), sources.end());
-        int stale = 0;
+        int stale = 0, refused = 0;
         for (const fs::path& src : sources) {
-            const std::string want = generate(src, read_file(src));
+            const Parsed want = generate(src, read_file(src));
             const fs::path dst = exercises / src.filename();
-            const std::string have = fs::exists(dst) ? read_file(dst) : std::string();
-            if (have == want) continue;
-            if (check) {
-                std::cerr << dst.string() << " is out of date with " << src.string() << ": run ./lab exercises\n";
-                ++stale;
-            } else {
-                fs::create_directories(exercises);
-                std::ofstream(dst, std::ios::binary) << want;
-                std::cout << "wrote " << dst.string() << '\n';
+            if (!fs::exists(dst)) {
+                if (check) {
+                    std::cerr << dst.string() << " is missing: run ./lab exercises\n";
+                    ++stale;
+                } else {
+                    fs::create_directories(exercises);
+                    write_file(dst, assemble(want, want.body));
+                    std::cout << "wrote " << dst.string() << '\n';
+                }
+                continue;
             }
+            const std::string old_text = read_file(dst);
+            const Parsed have = parse(dst.string(), old_text);
+            // The student's bodies: every one that is not the stub it started as.
+            std::map<std::string, std::string> bodies = want.body;
+            std::vector<std::string> orphans;
+            int kept = 0;
+            for (const auto& [id, body] : have.body) {
+                const auto stub = want.body.find(id);
+                if (stub == want.body.end()) {
+                    if (trim(body).rfind("throw NotImplemented(", 0) != 0) orphans.push_back(id);
+                } else if (body != stub->second) {
+                    bodies[id] = body;
+                    ++kept;
+                }
+            }
+            const bool outside_changed = have.outside != want.outside;
+            if (check) {
+                if (outside_changed) {
+                    std::cerr << dst.string() << " differs from what solutions/ makes outside the exercise regions"
+                              << " (bodies are not compared): run ./lab exercises, which keeps your bodies\n";
+                    ++stale;
+                }
+                continue;
+            }
+            if (!orphans.empty() && !force) {
+                std::cerr << dst.string() << ": your body of exercise";
+                for (const auto& id : orphans) std::cerr << ' ' << id;
+                std::cerr << " has no exercise region left in " << src.string()
+                          << "; nothing written (move the code, or use --force, which saves the file as "
+                          << dst.string() << ".orig first)\n";
+                ++refused;
+                continue;
+            }
+            const std::string text = assemble(want, bodies);
+            if (text == old_text) continue;
+            if (outside_changed || !orphans.empty()) {
+                write_file(dst.string() + ".orig", old_text);
+                std::cout << "saved " << dst.string() << ".orig\n";
+            }
+            write_file(dst, text);
+            std::cout << "wrote " << dst.string() << " (kept " << kept << " exercise bodies written there)\n";
         }
         if (fs::is_directory(exercises))
             for (const auto& e : fs::directory_iterator(exercises))
@@ -115,6 +220,7 @@ int main(int argc, char** argv) {
                     std::cerr << e.path().string() << " has no counterpart in " << solutions.string() << '\n';
                     ++stale;
                 }
+        if (refused) return 3;
         return stale ? 1 : 0;
     } catch (const Failure& f) {
         std::cerr << "rtlab-genex: " << f.message << '\n';

@@ -53,6 +53,8 @@ json stats_json(const std::string& chapter, const SceneEntry& entry, const Rende
            {"spp", o.spp},
            {"threads", r.threads},
            {"real", real_name()},
+           {"track", RTLAB_TRACK_NAME},
+           {"from_solutions", RTLAB_SOLVED_TEXT},
            {"rays", rays},
            {"shading", {{"light_terms", r.counters.light_terms}, {"specular_terms", r.counters.specular_terms}}},
            {"seconds", r.seconds},
@@ -77,19 +79,37 @@ int ChapterApp::run(int argc, char** argv) const {
     std::vector<int> pick_xy;
     bool list = false, stats = false;
 
-    cli.add_option("--width", o.width, "image width in pixels")->check(CLI::Range(1, 16384));
-    cli.add_option("--height", o.height, "image height in pixels")->check(CLI::Range(1, 16384));
-    cli.add_option("--spp", o.spp, "samples per pixel")->check(CLI::Range(1, 65536));
-    cli.add_option("--seed", o.seed, "random seed (images are identical for equal seeds)");
-    cli.add_option("--threads", o.threads, "worker threads, 0 = all cores")->check(CLI::Range(0, 1024));
-    cli.add_option("-o,--output", output, "output image, .png (sRGB) or .pfm (linear float)");
-    cli.add_option("--scene", scene_name, "scene to render (see --list-scenes)");
+    // A whole number first, then its range: "--width abc" is told it is not a number.
+    const auto whole = CLI::TypeValidator<int>("a whole number");
+    cli.add_option("--width", o.width, "image width in pixels")
+        ->check(whole)
+        ->check(CLI::Range(1, 16384))
+        ->capture_default_str();
+    cli.add_option("--height", o.height, "image height in pixels")
+        ->check(whole)
+        ->check(CLI::Range(1, 16384))
+        ->capture_default_str();
+    cli.add_option("--spp", o.spp, "samples per pixel (1 = the pixel centre)")
+        ->check(whole)
+        ->check(CLI::Range(1, 65536))
+        ->capture_default_str();
+    cli.add_option("--seed", o.seed, "random seed (images are identical for equal seeds)")->capture_default_str();
+    cli.add_option("--threads", o.threads, "worker threads, 0 = all cores")
+        ->check(whole)
+        ->check(CLI::Range(0, 1024))
+        ->capture_default_str();
+    cli.add_option("-o,--output", output,
+                   "output image, .png (sRGB) or .pfm (linear float); default out/" + id_ + "/SCENE.png");
+    cli.add_option("--scene", scene_name, "a built-in scene (see --list-scenes) or a scene file FILE.json")
+        ->capture_default_str();
     cli.add_flag("--list-scenes", list, "print the scene names, one a line, and exit");
     cli.add_option("--pick", pick_xy, "print what pixel X,Y (from the top left) sees, as JSON, and exit")
         ->delimiter(',')
         ->expected(2);
     cli.add_flag("--stats", stats, "print render statistics as one JSON line");
-    cli.set_version_flag("--version", std::string(id_ + " (rtlab " + kVersion + ", Real=" + real_name() + ")"));
+    cli.set_version_flag("--version", std::string(id_ + " (rtlab " + kVersion + ", Real=" + real_name() + ", " +
+                                                   RTLAB_TRACK_NAME + " track, exercises from solutions/: " +
+                                                   RTLAB_SOLVED_TEXT + ")"));
 
     try {
         cli.parse(argc, argv);

@@ -36,10 +36,20 @@ Polygon::Polygon(std::vector<Vec3> vertices) : vertices_(std::move(vertices)) {
     if (!(area2 > Real(1e-6) * extent * extent))
         throw std::invalid_argument(what + ": has no area (its vertices are collinear)");
     normal_ = n / area2;
-    // Planarity: every vertex within a small fraction of the polygon's size of the plane.
-    for (std::size_t i = 0; i < m; ++i)
-        if (std::abs(glm::dot(vertices_[i] - vertices_[0], normal_)) > Real(1e-4) * extent)
-            throw std::invalid_argument(what + ": vertex " + std::to_string(i) + " is off the plane of the others");
+    // Planarity: every vertex within a small fraction of the polygon's size of the plane
+    // through their centroid. Measured from the centroid, not from vertex 0, so that the
+    // vertex named is the one that is off, even when it is vertex 0.
+    Real offset = 0;
+    for (const Vec3& p : vertices_) offset += glm::dot(p - vertices_[0], normal_);
+    offset /= Real(m);
+    std::size_t worst = 0;
+    Real worst_distance = 0;
+    for (std::size_t i = 0; i < m; ++i) {
+        const Real distance = std::abs(glm::dot(vertices_[i] - vertices_[0], normal_) - offset);
+        if (distance > worst_distance) worst_distance = distance, worst = i;
+    }
+    if (worst_distance > Real(1e-4) * extent)
+        throw std::invalid_argument(what + ": vertex " + std::to_string(worst) + " is off the plane of the others");
     axes_ = projection_axes(normal_);
     projected_.reserve(m);
     for (const Vec3& p : vertices_) projected_.push_back(Vec2(p[axes_[0]], p[axes_[1]]));

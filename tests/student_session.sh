@@ -1,0 +1,80 @@
+#!/usr/bin/env bash
+# A scripted student session, on a copy of the lab: the exercises track as a student uses it.
+#   student_session.sh ROOT WORK_DIR GENEX
+# 1. Take chapter 01 from solutions/, solve exercise 2.1 correctly and 2.2 wrongly: the
+#    scorecard gives ch01 full marks, ch02 some but not all, ch03 nothing.
+# 2. Regenerating exercises/ (./lab exercises) and its check (in ./lab test) keep both bodies.
+# 3. The stored RTLAB_SOLVED is said every time and kept; an instructor's grading run in its
+#    own directory (as ./lab test does) changes nothing in the student's; bad values are refused.
+# 4. Fixing 2.2 raises the ch02 score: the wrong body was what failed.
+set -euo pipefail
+root=$1 work=$2 genex=$3
+passed=0 failed=0
+check() {  # check DESCRIPTION COMMAND...
+    local what=$1
+    shift
+    if "$@"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $what"; fi
+}
+score() { sed -nE "s/^ch$1 +([0-9]+) of ([0-9]+) +([0-9]+) of ([0-9]+).*/\1 \2 \3 \4/p" <<<"$2"; }
+
+rm -rf "$work" && mkdir -p "$work"
+tar -C "$root" --exclude=./build --exclude=./out --exclude=./.git -cf - . | tar -C "$work" -xf -
+cd "$work"
+ex=exercises/ch02_spheres.cpp
+
+# The bodies a student writes: 2.1 right (the reference's), 2.2 wrong (never a hit).
+python3 - "$root/solutions/ch02_spheres.cpp" "$ex" <<'PY'
+import re, sys
+solution, exercise = open(sys.argv[1]).read(), open(sys.argv[2]).read()
+body = re.search(r"// @exercise 2\.1 .*?\n(.*?)\n\s*// @end", solution, re.S).group(1)
+exercise = re.sub(r"(// @exercise 2\.1 .*?\n).*?(\n\s*// @end)", lambda m: m.group(1) + body + m.group(2), exercise, 1, re.S)
+exercise = re.sub(r"(// @exercise 2\.2 .*?\n).*?(\n\s*// @end)",
+                  lambda m: m.group(1) + "    return false;  // a student's wrong answer" + m.group(2), exercise, 1, re.S)
+open(sys.argv[2], "w").write(exercise)
+PY
+cp "$ex" "$work/mine.cpp"
+
+out=$(tools/grade --build build/exercises --solved "01")
+echo "$out"
+read -r p1 t1 g1 h1 <<<"$(score 01 "$out")"
+read -r p2 t2 g2 h2 <<<"$(score 02 "$out")"
+read -r p3 t3 g3 h3 <<<"$(score 03 "$out")"
+check "ch01 taken from solutions/ passes everything" test "$p1" = "$t1" -a "$g1" = "$h1" -a "$t1" -gt 0
+check "ch02 with 2.1 right and 2.2 wrong passes some unit tests, not all ($p2 of $t2)" test "$p2" -gt 0 -a "$p2" -lt "$t2"
+check "ch03 untouched passes nothing" test "$p3" = 0 -a "$g3" = 0
+check "the scorecard names the chapters from solutions/" grep -q "chapters taken from solutions/: 01$" <<<"$out"
+
+# Regenerating and checking keep both bodies.
+"$genex" solutions exercises >/dev/null
+check "./lab exercises keeps the student's bodies" cmp -s "$ex" mine.cpp
+check "the up-to-date check accepts a student's bodies" "$genex" solutions exercises --check
+check "the check wrote nothing" cmp -s "$ex" mine.cpp
+
+# The stored RTLAB_SOLVED is said again and kept; an instructor's run elsewhere leaves it.
+out=$(tools/grade --build build/exercises)
+check "grade without --solved keeps and says the stored chapters" grep -q "chapters taken from solutions/: 01$" <<<"$out"
+tools/grade --build build/lab-exercises --solved "01;02;03;04;05" >/dev/null
+out2=$(tools/grade --build build/exercises)
+check "an instructor's run in its own directory changes no student score" test "$(score 02 "$out2")" = "$(score 02 "$out")"
+check "... nor the stored chapters" grep -q "chapters taken from solutions/: 01$" <<<"$out2"
+for bad in "1;2" "01,02" "01 02" "06"; do
+    code=0
+    err=$(tools/grade --build build/exercises --solved "$bad" 2>&1 >/dev/null) || code=$?
+    check "RTLAB_SOLVED=\"$bad\" is refused with a message" test "$code" = 2 -a -n "$err"
+done
+out3=$(tools/grade --build build/exercises)
+check "a refused value leaves the stored one" grep -q "chapters taken from solutions/: 01$" <<<"$out3"
+
+# Fixing 2.2 raises the score.
+python3 - "$root/solutions/ch02_spheres.cpp" "$ex" <<'PY'
+import re, sys
+solution, exercise = open(sys.argv[1]).read(), open(sys.argv[2]).read()
+body = re.search(r"// @exercise 2\.2 .*?\n(.*?)\n\s*// @end", solution, re.S).group(1)
+open(sys.argv[2], "w").write(re.sub(r"(// @exercise 2\.2 .*?\n).*?(\n\s*// @end)", lambda m: m.group(1) + body + m.group(2), exercise, 1, re.S))
+PY
+out=$(tools/grade --build build/exercises)
+read -r q2 u2 _ _ <<<"$(score 02 "$out")"
+check "fixing 2.2 raises ch02 from $p2 to $q2 of $u2" test "$q2" -gt "$p2"
+
+echo "$passed passed, $failed failed"
+((failed == 0))
