@@ -1,5 +1,6 @@
 // STUDENT COPY of solutions/ch01_viewing_rays.cpp, made by tools/gen_exercises.cpp.
 // Write your code between each "@exercise" line and its "@end", in place of the throw.
+// Only those lines are yours: ./lab exercises keeps them and rewrites the rest.
 // Chapter 01 exercises: viewing rays (book §1, course §9.2). Declared in common/render/camera.hpp.
 #include "core/exercise.hpp"
 #include "render/camera.hpp"

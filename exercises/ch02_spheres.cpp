@@ -1,5 +1,6 @@
 // STUDENT COPY of solutions/ch02_spheres.cpp, made by tools/gen_exercises.cpp.
 // Write your code between each "@exercise" line and its "@end", in place of the throw.
+// Only those lines are yours: ./lab exercises keeps them and rewrites the rest.
 // Chapter 02 exercises: ray-sphere intersection (book §2, course §9.3.1). Declared in
 // common/geometry/sphere.hpp.
 #include "core/exercise.hpp"

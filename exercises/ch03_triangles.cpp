@@ -1,5 +1,6 @@
 // STUDENT COPY of solutions/ch03_triangles.cpp, made by tools/gen_exercises.cpp.
 // Write your code between each "@exercise" line and its "@end", in place of the throw.
+// Only those lines are yours: ./lab exercises keeps them and rewrites the rest.
 // Chapter 03 exercises: ray-triangle intersection (book §3, course §9.3.2). Declared in
 // common/geometry/triangle.hpp.
 #include "core/exercise.hpp"

@@ -1,5 +1,6 @@
 // STUDENT COPY of solutions/ch04_polygons.cpp, made by tools/gen_exercises.cpp.
 // Write your code between each "@exercise" line and its "@end", in place of the throw.
+// Only those lines are yours: ./lab exercises keeps them and rewrites the rest.
 // Chapter 04 exercises: ray-polygon intersection (book §4, course §9.3.3). Declared in
 // common/geometry/polygon.hpp.
 #include "core/exercise.hpp"

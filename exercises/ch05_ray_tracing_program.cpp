@@ -1,5 +1,6 @@
 // STUDENT COPY of solutions/ch05_ray_tracing_program.cpp, made by tools/gen_exercises.cpp.
 // Write your code between each "@exercise" line and its "@end", in place of the throw.
+// Only those lines are yours: ./lab exercises keeps them and rewrites the rest.
 // Chapter 05 exercises: the ray tracing program (book §5, course §9.4-9.4.1). Declared in
 // common/accel/surface_list.hpp and common/shading/shading.hpp.
 #include "accel/surface_list.hpp"

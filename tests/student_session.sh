@@ -62,7 +62,11 @@ for bad in "1;2" "01,02" "01 02" "06"; do
     err=$(tools/grade --build build/exercises --solved "$bad" 2>&1 >/dev/null) || code=$?
     check "RTLAB_SOLVED=\"$bad\" is refused with a message" test "$code" = 2 -a -n "$err"
 done
-out3=$(tools/grade --build build/exercises)
+# CMake refuses them too, and keeps the last good value for the next configure.
+code=0
+cmake -S . -B build/exercises "-DRTLAB_SOLVED=01,02" >/dev/null 2>&1 || code=$?
+check "CMake refuses RTLAB_SOLVED=\"01,02\"" test "$code" != 0
+out3=$(tools/grade --build build/exercises) || true
 check "a refused value leaves the stored one" grep -q "chapters taken from solutions/: 01$" <<<"$out3"
 
 # Fixing 2.2 raises the score.

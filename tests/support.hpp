@@ -25,8 +25,8 @@ struct StringMaker<glm::vec<L, T, Q>> {
 // Inside a loop over many cases: the first failure is checked in full (with whatever the loop
 // CAPTUREs), later ones are only counted, so a wrong exercise prints a few lines, not
 // thousands. Check the count after the loop: CHECK(failures == 0).
-#define RT_CHECK_FIRST(failures, ...)                          \
-    do {                                                       \
+#define RT_CHECK_FIRST(failures, ...)                                \
+    do {                                                             \
         if (!(__VA_ARGS__) && (failures)++ == 0) CHECK(__VA_ARGS__); \
     } while (0)
 

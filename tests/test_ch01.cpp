@@ -140,8 +140,10 @@ TEST_CASE("stress: every pixel's ray passes through its window point, cameras at
                     CAPTURE(cam.eye);
                     CAPTURE(i);
                     CAPTURE(j);
-                    RT_CHECK_FIRST(failures, std::abs(glm::dot(s, v.uvw.u) - want.x) < 16 * kEps * (1 + std::abs(want.x)));
-                    RT_CHECK_FIRST(failures, std::abs(glm::dot(s, v.uvw.v) - want.y) < 16 * kEps * (1 + std::abs(want.y)));
+                    RT_CHECK_FIRST(failures,
+                                   std::abs(glm::dot(s, v.uvw.u) - want.x) < 16 * kEps * (1 + std::abs(want.x)));
+                    RT_CHECK_FIRST(failures,
+                                   std::abs(glm::dot(s, v.uvw.v) - want.y) < 16 * kEps * (1 + std::abs(want.y)));
                     ++checked;
                 }
         }

@@ -4,7 +4,6 @@
 #include "io/scene_file.hpp"
 #include "render/integrators.hpp"
 #include "render/render.hpp"
-#include "shading/light.hpp"
 #include "support.hpp"
 
 #include <cmath>
@@ -102,23 +101,6 @@ TEST_CASE("any-hit: occluded agrees with the closest hit on every ray, and respe
     CHECK(hits > 300);
     CHECK(disagree == 0);
     CHECK_FALSE(Scene().occluded(Ray{Vec3(0), Vec3(1, 0, 0)}, Interval{}));
-}
-
-TEST_CASE("lights report direction, distance and colour") {
-    Light point;
-    point.position = Vec3(3, 4, 0);
-    point.color = Color(0.5f);
-    const LightSample s = point.sample(Vec3(0));
-    CHECK(s.distance == doctest::Approx(5));
-    CHECK(s.direction.x == doctest::Approx(0.6));
-    CHECK(s.direction.y == doctest::Approx(0.8));
-    CHECK(s.color == Color(0.5f));
-    Light sun;
-    sun.type = Light::Type::directional;
-    sun.direction = Vec3(0, -2, 0);
-    const LightSample d = sun.sample(Vec3(7, 8, 9));
-    CHECK(d.distance == kInfinity);
-    CHECK(d.direction == Vec3(0, 1, 0));
 }
 
 TEST_CASE("5.2 lambert: c_r c_l max(0, n . l)") {

@@ -4,6 +4,7 @@
 #include "render/camera.hpp"
 #include "render/integrators.hpp"
 #include "render/render.hpp"
+#include "shading/light.hpp"
 #include "support.hpp"
 
 #include <unistd.h>
@@ -57,6 +58,23 @@ TEST_CASE("bounding_box of a sphere (course §9.4.1)") {
     CHECK_THROWS_AS(Sphere(Vec3(0), 0), std::invalid_argument);
     CHECK_THROWS_AS(Sphere(Vec3(0), std::nan("")), std::invalid_argument);
     CHECK_THROWS_AS(Sphere(Vec3(0, kInfinity, 0), 1), std::invalid_argument);
+}
+
+TEST_CASE("lights report direction, distance and colour") {
+    Light point;
+    point.position = Vec3(3, 4, 0);
+    point.color = Color(0.5f);
+    const LightSample s = point.sample(Vec3(0));
+    CHECK(s.distance == doctest::Approx(5));
+    CHECK(s.direction.x == doctest::Approx(0.6));
+    CHECK(s.direction.y == doctest::Approx(0.8));
+    CHECK(s.color == Color(0.5f));
+    Light sun;
+    sun.type = Light::Type::directional;
+    sun.direction = Vec3(0, -2, 0);
+    const LightSample d = sun.sample(Vec3(7, 8, 9));
+    CHECK(d.distance == kInfinity);
+    CHECK(d.direction == Vec3(0, 1, 0));
 }
 
 TEST_CASE("View: degenerate cameras are rejected with a clear error") {

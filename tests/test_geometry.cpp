@@ -60,7 +60,7 @@ TEST_CASE("degenerate polygons are rejected with a clear error") {
                          std::invalid_argument);
     CHECK_THROWS_AS(Polygon({{0, 0, 0}, {1, 0, 0}, {0, std::nan(""), 0}}), std::invalid_argument);
     // The vertex named is the one off the plane, even when it is the first.
-    CHECK_THROWS_WITH_AS(Polygon({{0, 0, 0.5}, {1, 0, 0}, {1, 1, 0}, {0, 1, 0}, {0.5, 1.5, 0}}),
+    CHECK_THROWS_WITH_AS(Polygon({{0, 0, 0.5}, {1, 0, 0}, {1.5, 1, 0}, {0.5, 1.6, 0}, {-0.5, 1, 0}}),
                          doctest::Contains("vertex 0 is off the plane"), std::invalid_argument);
 }
 }  // TEST_SUITE("common")

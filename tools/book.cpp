@@ -68,7 +68,8 @@ bool excerpt(const fs::path& root, const std::string& file, const std::string& n
         if (std::regex_match(l, m, exercise_open)) {
             in_exercise = true;
             if (student)
-                body.push_back(m[1].str() + "// exercise " + m[2].str() + ": yours to write (book edition for students)");
+                body.push_back(m[1].str() + "// exercise " + m[2].str() +
+                               ": yours to write (book edition for students)");
             continue;
         }
         if (std::regex_match(l, exercise_close)) {
@@ -103,7 +104,9 @@ std::string section_id(const std::string& number) {
     return id;
 }
 
-std::string html_name(const fs::path& md) { return fs::path(md).replace_extension(".html").filename().string(); }
+std::string html_name(const fs::path& md) {
+    return fs::path(md).replace_extension(".html").filename().string();
+}
 
 // Links "§N.M" (not "course §9.x") to its section, outside code.
 std::string link_sections(const std::string& line, const std::map<std::string, std::string>& where) {
@@ -148,8 +151,8 @@ int main(int argc, char** argv) {
             root = argv[++i];
         else if (a == "--out" && i + 1 < argc)
             out = argv[++i];
-        else if (a == "--edition" && i + 1 < argc && (std::string(argv[i + 1]) == "student" ||
-                                                      std::string(argv[i + 1]) == "instructor"))
+        else if (a == "--edition" && i + 1 < argc &&
+                 (std::string(argv[i + 1]) == "student" || std::string(argv[i + 1]) == "instructor"))
             student = std::string(argv[++i]) == "student";
         else {
             std::cerr << "usage: rtlab-book --root SRC_DIR --out OUT_DIR [--edition student|instructor] "
@@ -210,7 +213,8 @@ int main(int argc, char** argv) {
         bool fence = false, front_matter = false;
         for (const auto& l : lines) {
             ++number;
-            if (number == 1 && l == "---") front_matter = true;
+            if (number == 1 && l == "---")
+                front_matter = true;
             else if (front_matter && l == "---") {
                 front_matter = false;
                 text << l << '\n' << '\n' << nav << '\n';

@@ -60,12 +60,13 @@ std::string trim(const std::string& s) {
 
 const std::regex kBegin(R"(^(\s*)// @exercise\s+(\S+)\s*\|\s*([^|]+?)\s*\|\s*(.+?)\s*$)");
 const std::regex kEnd(R"(^\s*// @end\s*$)");
+const std::regex kLooksLikeMarker(R"(^\s*//\s*@\s*exercise)");
 
 // A file cut at its exercise regions: the text outside (with a placeholder line where each
 // body was) and the bodies, by exercise number.
 struct Parsed {
     std::string outside;
-    std::vector<std::string> order;            // exercise numbers, in file order
+    std::vector<std::string> order;           // exercise numbers, in file order
     std::map<std::string, std::string> body;  // number -> the lines between the markers
 };
 
@@ -95,7 +96,7 @@ Parsed parse(const std::string& name, const std::string& text) {
             p.outside += line + '\n';
         } else if (inside) {
             p.body[id] += line + '\n';
-        } else if (line.find("@exercise") != std::string::npos) {
+        } else if (std::regex_search(line, kLooksLikeMarker)) {
             throw Failure{name + ":" + std::to_string(number) +
                           ": malformed marker; expected \"// @exercise N | name | book §S\""};
         } else {

@@ -107,9 +107,9 @@ int ChapterApp::run(int argc, char** argv) const {
         ->delimiter(',')
         ->expected(2);
     cli.add_flag("--stats", stats, "print render statistics as one JSON line");
-    cli.set_version_flag("--version", std::string(id_ + " (rtlab " + kVersion + ", Real=" + real_name() + ", " +
-                                                   RTLAB_TRACK_NAME + " track, exercises from solutions/: " +
-                                                   RTLAB_SOLVED_TEXT + ")"));
+    cli.set_version_flag("--version",
+                         std::string(id_ + " (rtlab " + kVersion + ", Real=" + real_name() + ", " + RTLAB_TRACK_NAME +
+                                     " track, exercises from solutions/: " + RTLAB_SOLVED_TEXT + ")"));
 
     try {
         cli.parse(argc, argv);
