@@ -17,16 +17,17 @@ std::string this_chapter;  // "02" for test_ch02, empty for test_common
 }  // namespace
 
 REGISTER_EXCEPTION_TRANSLATOR(const rt::NotImplemented& e) {
-    // The stub's message starts "exercise N.M (name)"; chapter N is the exercise's own.
-    static const std::regex form(R"(^exercise (\d+)\.\S+ \(([^)]*)\))");
+    // The stub's message starts "exercise N.M (name) is not done yet"; chapter N is the
+    // exercise's own.
+    static const std::regex form(R"(^exercise (\d+)\.(\S+) \((.*)\) is not done yet)");
     const std::string what = e.what();
     std::smatch m;
     if (std::regex_search(what, m, form)) {
         std::string chapter = m[1].str();
         if (chapter.size() == 1) chapter = "0" + chapter;
         if (chapter != this_chapter)
-            return doctest::String(("needs exercise " + m[0].str().substr(9) + ", chapter " + chapter +
-                                    "): solve it, or take chapter " + chapter +
+            return doctest::String(("needs exercise " + m[1].str() + "." + m[2].str() + " (" + m[3].str() +
+                                    ", chapter " + chapter + "): solve it, or take chapter " + chapter +
                                     " from solutions/ with -DRTLAB_SOLVED=\"" + chapter + "\"")
                                        .c_str());
     }

@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # A scripted student session, on a copy of the lab: the exercises track as a student uses it.
-#   student_session.sh ROOT WORK_DIR GENEX
+#   student_session.sh ROOT WORK_DIR GENEX      (./lab test runs it last, after its own grading,
+#                                                so ccache has most of the objects already)
 # 1. Take chapter 01 from solutions/, solve exercise 2.1 correctly and 2.2 wrongly: the
 #    scorecard gives ch01 full marks, ch02 some but not all, ch03 nothing.
 # 2. Regenerating exercises/ (./lab exercises) and its check (in ./lab test) keep both bodies.
@@ -18,6 +19,8 @@ check() {  # check DESCRIPTION COMMAND...
 score() { sed -nE "s/^ch$1 +([0-9]+) of ([0-9]+) +([0-9]+) of ([0-9]+).*/\1 \2 \3 \4/p" <<<"$2"; }
 
 rm -rf "$work" && mkdir -p "$work"
+root=$(cd "$root" && pwd)
+genex=$(cd "$(dirname "$genex")" && pwd)/$(basename "$genex")
 tar -C "$root" --exclude=./build --exclude=./out --exclude=./.git -cf - . | tar -C "$work" -xf -
 cd "$work"
 ex=exercises/ch02_spheres.cpp

@@ -80,7 +80,17 @@ int ChapterApp::run(int argc, char** argv) const {
     bool list = false, stats = false;
 
     // A whole number first, then its range: "--width abc" is told it is not a number.
-    const auto whole = CLI::TypeValidator<int>("a whole number");
+    const CLI::Validator whole(
+        [](std::string& value) {
+            std::size_t used = 0;
+            try {
+                (void)std::stoll(value, &used);
+            } catch (const std::exception&) {
+                used = 0;
+            }
+            return used > 0 && used == value.size() ? std::string() : "must be a whole number, not '" + value + "'";
+        },
+        "");
     cli.add_option("--width", o.width, "image width in pixels")
         ->check(whole)
         ->check(CLI::Range(1, 16384))
