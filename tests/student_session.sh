@@ -19,6 +19,7 @@ check() {  # check DESCRIPTION COMMAND...
 score() { sed -nE "s/^ch$1 +([0-9]+) of ([0-9]+) +([0-9]+) of ([0-9]+).*/\1 \2 \3 \4/p" <<<"$2"; }
 
 rm -rf "$work" && mkdir -p "$work"
+work=$(cd "$work" && pwd)
 root=$(cd "$root" && pwd)
 genex=$(cd "$(dirname "$genex")" && pwd)/$(basename "$genex")
 tar -C "$root" --exclude=./build --exclude=./out --exclude=./.git -cf - . | tar -C "$work" -xf -
