@@ -5,6 +5,7 @@
 #include "render/integrators.hpp"
 #include "render/render.hpp"
 #include "support.hpp"
+#include "support/source_dir.hpp"
 
 #include <cmath>
 #include <filesystem>
@@ -18,7 +19,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kScenes = std::string(RTLAB_SOURCE_DIR) + "/chapters/ch05_ray_tracing_program/scenes/";
+const std::string kScenes = rt::test::source_dir() + "/chapters/ch05_ray_tracing_program/scenes/";
 
 }  // namespace
 

@@ -2,6 +2,7 @@
 #include "io/obj.hpp"
 #include "io/scene_file.hpp"
 #include "support.hpp"
+#include "support/source_dir.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -14,7 +15,7 @@ namespace fs = std::filesystem;
 
 namespace {
 
-const std::string kScenes = std::string(RTLAB_SOURCE_DIR) + "/chapters/ch05_ray_tracing_program/scenes/";
+const std::string kScenes = rt::test::source_dir() + "/chapters/ch05_ray_tracing_program/scenes/";
 
 std::string load_error(const std::string& text) {
     try {
@@ -112,7 +113,7 @@ TEST_CASE("OBJ meshes: faces fanned into triangles, bad files rejected in one li
 TEST_CASE("the book's scene-format examples load, and the schema is valid JSON") {
     // Appendix A's ```json blocks are complete scenes: the documentation cannot drift from
     // the loader without this failing.
-    std::ifstream book(std::string(RTLAB_SOURCE_DIR) + "/book/appendix-a-scene-format.md");
+    std::ifstream book(rt::test::source_dir() + "/book/appendix-a-scene-format.md");
     REQUIRE(book);
     std::string line, block;
     bool inside = false;
@@ -131,7 +132,7 @@ TEST_CASE("the book's scene-format examples load, and the schema is valid JSON")
         }
     }
     CHECK(examples >= 2);
-    std::ifstream schema(std::string(RTLAB_SOURCE_DIR) + "/common/io/scene.schema.json");
+    std::ifstream schema(rt::test::source_dir() + "/common/io/scene.schema.json");
     REQUIRE(schema);
     const auto parsed = nlohmann::json::parse(schema, nullptr, false);
     CHECK_FALSE(parsed.is_discarded());
