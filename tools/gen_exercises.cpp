@@ -68,6 +68,7 @@ struct Parsed {
     std::string outside;
     std::vector<std::string> order;           // exercise numbers, in file order
     std::map<std::string, std::string> body;  // number -> the lines between the markers
+    std::map<std::string, std::string> stub;  // number -> the line that throws, from its marker
 };
 
 Parsed parse(const std::string& name, const std::string& text) {
@@ -89,6 +90,8 @@ Parsed parse(const std::string& name, const std::string& text) {
             if (p.body.count(id)) throw Failure{name + ":" + std::to_string(number) + ": exercise " + id + " twice"};
             p.order.push_back(id);
             p.body[id];
+            p.stub[id] = m[1].str() + "throw NotImplemented(\"exercise " + id + " (" + trim(m[3].str()) +
+                         ") is not done yet: see " + m[4].str() + "\");\n";
             p.outside += line + "\n\x01\n";  // where the body goes
         } else if (std::regex_match(line, kEnd)) {
             if (!inside) throw Failure{name + ":" + std::to_string(number) + ": @end without @exercise"};
@@ -110,13 +113,7 @@ Parsed parse(const std::string& name, const std::string& text) {
 // The student copy of a solution: its outside text and the stub bodies.
 Parsed generate(const fs::path& source, const std::string& text) {
     Parsed solution = parse(source.string(), text);
-    std::istringstream in(text);
-    for (std::string line; std::getline(in, line);) {
-        std::smatch m;
-        if (std::regex_match(line, m, kBegin))
-            solution.body[m[2].str()] = m[1].str() + "throw NotImplemented(\"exercise " + m[2].str() + " (" +
-                                        trim(m[3].str()) + ") is not done yet: see " + m[4].str() + "\");\n";
-    }
+    solution.body = solution.stub;
     solution.outside = "// STUDENT COPY of solutions/" + source.filename().string() +
                        ", made by tools/gen_exercises.cpp.\n"
                        "// Write your code between each \"@exercise\" line and its \"@end\", in place of the throw.\n"

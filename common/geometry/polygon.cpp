@@ -11,53 +11,48 @@ namespace rt {
 
 namespace {
 
-// The largest distance of a vertex (all but `skip`) from the plane with normal n through
-// their centroid, and which vertex it is.
-std::pair<Real, std::size_t> worst_distance(const std::vector<Vec3>& v, const Vec3& n, std::size_t skip) {
-    Real offset = 0;
-    std::size_t count = 0;
+// Newell's method: the area-weighted normal (not normalised; its length is twice the area)
+// of any simple polygon, convex or not, robust to nearly collinear vertex triples where a
+// single cross product is not. Vertex `skip` is left out (v.size(): none).
+Vec3 newell(const std::vector<Vec3>& v, std::size_t skip) {
+    std::vector<std::size_t> ring;
     for (std::size_t i = 0; i < v.size(); ++i)
-        if (i != skip) offset += glm::dot(v[i] - v[0], n), ++count;
-    offset /= Real(count);
-    std::pair<Real, std::size_t> worst{0, 0};
-    for (std::size_t i = 0; i < v.size(); ++i)
-        if (i != skip) worst = std::max(worst, {std::abs(glm::dot(v[i] - v[0], n) - offset), i});
-    return worst;
-}
-
-Vec3 newell_normal(const std::vector<Vec3>& v, std::size_t skip) {
-    std::vector<const Vec3*> kept;
-    for (std::size_t i = 0; i < v.size(); ++i)
-        if (i != skip) kept.push_back(&v[i]);
+        if (i != skip) ring.push_back(i);
     Vec3 n(0);
-    for (std::size_t i = 0; i < kept.size(); ++i) {
-        const Vec3 &p = *kept[i], &q = *kept[(i + 1) % kept.size()];
+    for (std::size_t k = 0; k < ring.size(); ++k) {
+        const Vec3 &p = v[ring[k]], &q = v[ring[(k + 1) % ring.size()]];
         n += Vec3((p.y - q.y) * (p.z + q.z), (p.z - q.z) * (p.x + q.x), (p.x - q.x) * (p.y + q.y));
     }
-    return glm::normalize(n);
+    return n;
+}
+
+// How far each vertex (but `skip`) lies from the plane with unit normal n through their
+// centroid, farthest first.
+std::vector<std::pair<Real, std::size_t>> plane_distances(const std::vector<Vec3>& v, const Vec3& n, std::size_t skip) {
+    Real offset = 0;
+    for (std::size_t i = 0; i < v.size(); ++i)
+        if (i != skip) offset += glm::dot(v[i] - v[0], n);
+    offset /= Real(v.size() - (skip < v.size()));
+    std::vector<std::pair<Real, std::size_t>> d;
+    for (std::size_t i = 0; i < v.size(); ++i)
+        if (i != skip) d.push_back({std::abs(glm::dot(v[i] - v[0], n) - offset), i});
+    std::sort(d.rbegin(), d.rend());
+    return d;
 }
 
 // Which vertex is off the plane (v.size() if none). The plane fitted to all vertices leans
 // towards an outlier, so the one farthest from it need not be the culprit: of the few
 // farthest, name the first without which the others lie in a plane.
 std::size_t off_plane_vertex(const std::vector<Vec3>& v, const Vec3& n, Real tolerance) {
-    const std::size_t none = v.size();
-    std::vector<std::pair<Real, std::size_t>> distances;
-    {
-        Real offset = 0;
-        for (const Vec3& p : v) offset += glm::dot(p - v[0], n);
-        offset /= Real(v.size());
-        for (std::size_t i = 0; i < v.size(); ++i)
-            distances.push_back({std::abs(glm::dot(v[i] - v[0], n) - offset), i});
-    }
-    std::sort(distances.rbegin(), distances.rend());
-    if (!(distances[0].first > tolerance)) return none;
+    const auto d = plane_distances(v, n, v.size());
+    if (!(d[0].first > tolerance)) return v.size();
     if (v.size() > 3)
-        for (std::size_t k = 0; k < std::min<std::size_t>(4, distances.size()); ++k) {
-            const std::size_t candidate = distances[k].second;
-            if (worst_distance(v, newell_normal(v, candidate), candidate).first <= tolerance) return candidate;
+        for (std::size_t k = 0; k < std::min<std::size_t>(4, d.size()); ++k) {
+            const std::size_t candidate = d[k].second;
+            const Vec3 without = glm::normalize(newell(v, candidate));
+            if (plane_distances(v, without, candidate)[0].first <= tolerance) return candidate;
         }
-    return distances[0].second;
+    return d[0].second;
 }
 
 }  // namespace
@@ -77,15 +72,9 @@ Polygon::Polygon(std::vector<Vec3> vertices) : vertices_(std::move(vertices)) {
             throw std::invalid_argument(what + ": vertices " + std::to_string(i) + " and " +
                                         std::to_string((i + 1) % m) + " are the same point");
     }
-    // Newell's method: the area-weighted normal of any simple polygon, convex or not, robust
-    // to nearly collinear vertex triples where a single cross product is not.
-    Vec3 n(0);
+    const Vec3 n = newell(vertices_, m);
     Real extent = 0;
-    for (std::size_t i = 0; i < m; ++i) {
-        const Vec3 &p = vertices_[i], &q = vertices_[(i + 1) % m];
-        n += Vec3((p.y - q.y) * (p.z + q.z), (p.z - q.z) * (p.x + q.x), (p.x - q.x) * (p.y + q.y));
-        extent = std::max(extent, glm::length(q - p));
-    }
+    for (std::size_t i = 0; i < m; ++i) extent = std::max(extent, glm::length(vertices_[(i + 1) % m] - vertices_[i]));
     const Real area2 = glm::length(n);  // twice the area
     if (!(area2 > Real(1e-6) * extent * extent))
         throw std::invalid_argument(what + ": has no area (its vertices are collinear)");

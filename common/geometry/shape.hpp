@@ -33,13 +33,13 @@ inline bool hit_record(const Shape& shape, const Ray& ray, Interval interval, Su
     return std::visit([&](const auto& s) { return hit_record(s, ray, interval, who, rec); }, shape);
 }
 
-// Any hit in the interval: what a shadow ray asks. A mesh stops at its first triangle.
+// Any hit in the interval: what a shadow ray asks. For most shapes that is their own test;
+// a mesh has an overload of its own (geometry/mesh.hpp) that stops at its first triangle.
 template <class S>
 bool occluded(const S& shape, const Ray& ray, Interval interval) {
     typename S::Hit h;  // SphereHit, TriangleHit, PolygonHit or MeshHit
     return hit(shape, ray, interval, h);
 }
-bool occluded(const Mesh& mesh, const Ray& ray, Interval interval);
 
 inline bool occluded(const Shape& shape, const Ray& ray, Interval interval) {
     return std::visit([&](const auto& s) { return occluded(s, ray, interval); }, shape);
