@@ -119,6 +119,21 @@ TEST_CASE("View: an orthographic window keeps its height and takes its width fro
     CHECK(r.origin.y == doctest::Approx(-1.5 + 0.015));
 }
 
+TEST_CASE("View: a camera sample's film position and time reach the ray; the pinhole ignores the lens") {
+    Camera cam;
+    const View v = cam.view(40, 20);
+    const Ray centre = v.pixel_ray(20, 10);  // the pixel centre (20.5, 10.5): time 0
+    CHECK(centre.time == 0);
+    CameraSample s{Vec2(Real(20.5), Real(10.5)), Vec2(Real(0.9), Real(-0.3)), Real(0.25)};
+    const Ray r = v.ray(s);
+    CHECK(r.time == Real(0.25));
+    CHECK(r.origin == centre.origin);  // no lens yet: the lens position changes nothing
+    CHECK(r.direction == centre.direction);
+    s.film = Vec2(0, 0);  // the bottom-left corner of the image
+    CHECK(v.ray(s).direction.x < 0);
+    CHECK(v.ray(s).direction.y < 0);
+}
+
 TEST_CASE("stress: every pixel's ray passes through its window point, cameras at scales 1 to 1e5") {
     pcg32 rng(2024);
     std::uniform_real_distribution<double> unit(-1, 1);
