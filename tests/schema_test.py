@@ -44,7 +44,11 @@ def resolve(pointer):
 jsonschema.Draft202012Validator.check_schema(schema)
 validator = jsonschema.Draft202012Validator(schema)
 
-for limit in json.loads(subprocess.run([str(limits_tool)], check=True, capture_output=True, text=True).stdout):
+limits = json.loads(subprocess.run([str(limits_tool)], check=True, capture_output=True, text=True).stdout)
+check(len([x for x in limits if x["schema"]]) >= 10, "expected the scene limits of limits.hpp")
+for limit in limits:
+    if not limit["schema"]:  # a resource limit (file sizes, image size): not a scene value
+        continue
     node = resolve(limit["schema"])
     lo, hi = ("minItems", "maxItems") if node.get("type") == "array" or "minItems" in node else ("minimum", "maximum")
     check(node.get(lo) == limit["min"] and node.get(hi) == limit["max"],

@@ -52,7 +52,7 @@ TEST_CASE("scene file errors name the file, line, column and key") {
           "background, ambient, materials, lights, surfaces)");
     CHECK(load_error(
               "{\"camera\": {\"eye\": [0, 0, 5], \"target\": [0, 0, 0]},\n \"surfaces\": [\n  {\"type\": \"sphere\", "
-              "\"center\": [0, 0, 0], \"radius\": -1}]}") == "test.json:3:43: /surfaces/0/radius: must be > 0");
+              "\"center\": [0, 0, 0], \"radius\": -1}]}") == "test.json:3:43: /surfaces/0/radius: length must be in 1e-6..1e8, not -1");
     CHECK(load_error(
               "{\"camera\": {\"eye\": [0, 0, 5], \"target\": [0, 0, 0]},\n \"surfaces\": [\n  {\"type\": \"sphere\", "
               "\"center\": [0, 0], \"radius\": 1}]}") ==
@@ -79,7 +79,7 @@ TEST_CASE("scene file errors name the file, line, column and key") {
               .find("/materials/m/shine: unknown key 'shine'") != std::string::npos);
     CHECK(load_error(prefix + R"("shading": "toon", "surfaces": []})").find("unknown shading \"toon\"") !=
           std::string::npos);
-    CHECK_THROWS_WITH_AS(load_scene_file("/no/such/scene.json"), "/no/such/scene.json: cannot open scene file",
+    CHECK_THROWS_WITH_AS(load_scene_file("/no/such/scene.json"), "scene file /no/such/scene.json: no such file",
                          SceneError);
 }
 

@@ -86,8 +86,8 @@ int main(int argc, char** argv) {
 
     Levels a, b;
     try {
-        a = levels(rt::read_png(a_path));
-        b = levels(rt::read_png(b_path));
+        a = levels(rt::read_image(a_path));
+        b = levels(rt::read_image(b_path));
     } catch (const std::exception& e) {
         std::fprintf(stderr, "rtlab-diff: error: %s\n", e.what());
         return 2;

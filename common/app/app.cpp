@@ -2,7 +2,7 @@
 
 #include "core/version.hpp"
 #include "io/image_file.hpp"
-#include "render/render.hpp"
+#include "geometry/limits.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -16,6 +16,12 @@ namespace rt {
 namespace {
 
 using nlohmann::json;
+
+// Names come from file names, which need not be UTF-8: such bytes print as U+FFFD rather
+// than make the dump throw.
+std::string dump(const json& j) {
+    return j.dump(-1, ' ', false, json::error_handler_t::replace);
+}
 
 json to_json(const Vec3& v) {
     return json::array({v.x, v.y, v.z});
@@ -57,6 +63,7 @@ json stats_json(const std::string& chapter, const SceneEntry& entry, const Rende
            {"from_solutions", RTLAB_SOLVED_TEXT},
            {"rays", rays},
            {"shading", {{"light_terms", r.counters.light_terms}, {"specular_terms", r.counters.specular_terms}}},
+           {"nonfinite_samples", r.counters.nonfinite_samples},
            {"seconds", r.seconds},
            {"mrays_per_s", mrays}};
     if (s.from_file) {  // what loading the scene file kept, and what it left out
@@ -71,13 +78,11 @@ json stats_json(const std::string& chapter, const SceneEntry& entry, const Rende
 
 }  // namespace
 
-int ChapterApp::run(int argc, char** argv) const {
+std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocation& inv) const {
     CLI::App cli{id_ + ": " + title_, id_};
-    RenderOptions o;
+    RenderOptions& o = inv.options;
     std::string scene_name = scenes_.empty() ? "" : scenes_.front().name;
-    std::string output;
-    std::vector<int> pick_xy;
-    bool list = false, stats = false;
+    bool list = false;
 
     // A whole number first, then its range: "--width abc" is told it is not a number.
     const CLI::Validator whole(
@@ -91,42 +96,46 @@ int ChapterApp::run(int argc, char** argv) const {
             return used > 0 && used == value.size() ? std::string() : "must be a whole number, not '" + value + "'";
         },
         "");
+    const auto range = [](const limits::Range& r) { return CLI::Range(r.min, r.max); };
     cli.add_option("--width", o.width, "image width in pixels")
         ->check(whole)
-        ->check(CLI::Range(1, 16384))
+        ->check(range(limits::image_side))
         ->capture_default_str();
     cli.add_option("--height", o.height, "image height in pixels")
         ->check(whole)
-        ->check(CLI::Range(1, 16384))
+        ->check(range(limits::image_side))
         ->capture_default_str();
     cli.add_option("--spp", o.spp, "samples per pixel (1 = the pixel centre)")
         ->check(whole)
-        ->check(CLI::Range(1, 65536))
+        ->check(range(limits::samples_per_pixel))
         ->capture_default_str();
     cli.add_option("--seed", o.seed, "random seed (images are identical for equal seeds)")->capture_default_str();
     cli.add_option("--threads", o.threads, "worker threads, 0 = all cores")
         ->check(whole)
-        ->check(CLI::Range(0, 1024))
+        ->check(range(limits::threads))
         ->capture_default_str();
-    cli.add_option("-o,--output", output,
+    cli.add_option("-o,--output", inv.output,
                    "output image, .png (sRGB) or .pfm (linear float); default out/" + id_ + "/SCENE.png");
     cli.add_option("--scene", scene_name, "a built-in scene (see --list-scenes) or a scene file FILE.json")
         ->capture_default_str();
     cli.add_flag("--list-scenes", list, "print the scene names, one a line, and exit");
-    cli.add_option("--pick", pick_xy, "print what pixel X,Y (from the top left) sees, as JSON, and exit")
+    cli.add_option("--pick", inv.pick, "print what pixel X,Y (from the top left) sees, as JSON, and exit")
         ->delimiter(',')
         ->expected(2);
-    cli.add_flag("--stats", stats, "print render statistics as one JSON line");
+    cli.add_flag("--stats", inv.stats, "print render statistics as one JSON line");
     cli.set_version_flag("--version",
                          std::string(id_ + " (rtlab " + kVersion + ", Real=" + real_name() + ", " + RTLAB_TRACK_NAME +
                                      " track, exercises from solutions/: " + RTLAB_SOLVED_TEXT + ")"));
 
+    const auto usage = [&](const std::string& message) {
+        std::fprintf(stderr, "%s: error: %s\n", id_.c_str(), message.c_str());
+        return 2;
+    };
     try {
         cli.parse(argc, argv);
     } catch (const CLI::ParseError& e) {
         if (e.get_exit_code() == 0) return cli.exit(e);  // --help, --version
-        std::fprintf(stderr, "%s: error: %s\n", id_.c_str(), e.what());
-        return 2;
+        return usage(e.what());
     }
 
     if (list) {
@@ -136,38 +145,48 @@ int ChapterApp::run(int argc, char** argv) const {
     const SceneEntry* entry = nullptr;
     for (const SceneEntry& s : scenes_)
         if (s.name == scene_name) entry = &s;
-    SceneEntry file_entry;
-    if (!entry && scene_name.size() > 5 && scene_name.ends_with(".json")) {
+    if (entry) {
+        inv.scene = *entry;
+    } else if (scene_name.size() > 5 && scene_name.ends_with(".json")) {
         std::string stem = scene_name.substr(scene_name.find_last_of('/') + 1);
         stem = stem.substr(0, stem.size() - 5);
-        file_entry = {stem, "scene file " + scene_name,
-                      [path = scene_name](SceneSummary& summary) { return load_scene_file(path, &summary); }};
-        entry = &file_entry;
+        inv.scene = {stem, "scene file " + scene_name,
+                     [path = scene_name](SceneSummary& summary) { return load_scene_file(path, &summary); }};
+    } else {
+        return usage("--scene: unknown scene '" + scene_name + "' (see --list-scenes, or give a FILE.json)");
     }
-    if (!entry) {
-        std::fprintf(stderr, "%s: error: --scene: unknown scene '%s' (see --list-scenes, or give a FILE.json)\n",
-                     id_.c_str(), scene_name.c_str());
-        return 2;
+    if (cli.count("--output") && inv.output.empty()) return usage("--output: must not be empty");
+    if (inv.output.empty()) inv.output = "out/" + id_ + "/" + inv.scene.name + ".png";
+    if (!is_image_path(inv.output)) return usage("--output: '" + inv.output + "' must end in .png or .pfm");
+    try {
+        check_budget(o);
+    } catch (const std::invalid_argument& e) {
+        return usage(e.what());
     }
-    if (output.empty()) output = "out/" + id_ + "/" + entry->name + ".png";
-    if (!is_image_path(output)) {
-        std::fprintf(stderr, "%s: error: --output: '%s' must end in .png or .pfm\n", id_.c_str(), output.c_str());
-        return 2;
-    }
+    if (!inv.pick.empty() && (inv.pick[0] < 0 || inv.pick[0] >= o.width || inv.pick[1] < 0 || inv.pick[1] >= o.height))
+        return usage("--pick: pixel " + std::to_string(inv.pick[0]) + "," + std::to_string(inv.pick[1]) +
+                     " is outside the " + std::to_string(o.width) + "x" + std::to_string(o.height) + " image");
+    return std::nullopt;
+}
 
+int ChapterApp::execute(const Invocation& inv) const {
     try {
         SceneSummary summary;
-        Scene scene = entry->build(summary);
-        scene.name = entry->name;
-        if (!pick_xy.empty()) {
-            const Pick p = pick(scene, o, pick_xy[0], pick_xy[1]);
-            std::printf("%s\n", pick_json(*entry, scene, pick_xy[0], pick_xy[1], p).dump().c_str());
+        Scene scene = inv.scene.build(summary);
+        scene.name = inv.scene.name;
+        if (!inv.pick.empty()) {
+            const Pick p = pick(scene, inv.options, inv.pick[0], inv.pick[1]);
+            std::printf("%s\n", dump(pick_json(inv.scene, scene, inv.pick[0], inv.pick[1], p)).c_str());
             return 0;
         }
+        RenderOptions o = inv.options;
         o.progress = ::isatty(STDERR_FILENO) != 0;
         const RenderResult r = render(scene, o);
-        write_image(r.image, output);
-        if (stats) std::printf("%s\n", stats_json(id_, *entry, o, r, summary).dump().c_str());
+        // Everything that can fail happens before the image is written, so a failed run
+        // leaves no file.
+        const std::string stats = inv.stats ? dump(stats_json(id_, inv.scene, o, r, summary)) : "";
+        write_image(r.image, inv.output);
+        if (inv.stats) std::printf("%s\n", stats.c_str());
     } catch (const std::exception& e) {
         // Bad input (a scene file, a camera, a value) is exit 2; a render that failed, exit 1.
         const bool bad_input = dynamic_cast<const SceneError*>(&e) || dynamic_cast<const std::invalid_argument*>(&e);
@@ -175,6 +194,13 @@ int ChapterApp::run(int argc, char** argv) const {
         return bad_input ? 2 : 1;
     }
     return 0;
+}
+
+int ChapterApp::run(int argc, char** argv) const {
+    Invocation invocation;
+    if (const auto code = parse(argc, argv, invocation)) return *code;
+    remove_temporaries_on_interrupt();
+    return execute(invocation);
 }
 
 }  // namespace rt

@@ -2,9 +2,11 @@
 // The command line every chapter executable shares. A chapter's main() registers its scenes
 // and calls run(); everything else (options, rendering, output, picking, stats) is here.
 #include "io/scene_file.hpp"
+#include "render/render.hpp"
 #include "render/scene.hpp"
 
 #include <functional>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -32,8 +34,23 @@ public:
 
     // --scene takes a registered name or any FILE.json. Exit codes: 0 done, 1 the render
     // failed (e.g. an unfinished exercise or an unwritable output), 2 bad input (command line
-    // or scene file).
+    // or scene file); a run ended by SIGINT or SIGTERM ends by that signal (130 or 143 in a
+    // shell). A run that fails writes no file.
     int run(int argc, char** argv) const;
+
+    // What a command line asks for, once parsed and checked.
+    struct Invocation {
+        RenderOptions options;
+        SceneEntry scene;
+        std::string output;
+        std::vector<int> pick;  // empty, or X and Y
+        bool stats = false;
+    };
+    // Parses and checks a command line without touching any file: the exit code to end with
+    // (--help, --version, --list-scenes, or 2 after one line on stderr), or nothing when
+    // `invocation` is ready for execute().
+    std::optional<int> parse(int argc, const char* const* argv, Invocation& invocation) const;
+    int execute(const Invocation& invocation) const;
 
 private:
     std::string id_;

@@ -17,6 +17,9 @@ struct RayCounters {
     // Shading work, so --stats can show what a scene skips.
     std::uint64_t light_terms = 0;     // light evaluations at shading points
     std::uint64_t specular_terms = 0;  // of those, highlights computed (not skipped)
+    // Samples whose radiance came out NaN or infinite, and were left out of their pixel.
+    // Zero for every scene the lab ships: the tests check it.
+    std::uint64_t nonfinite_samples = 0;
 
     void count(RayKind kind) { ++rays[std::size_t(kind)]; }
     std::uint64_t of(RayKind kind) const { return rays[std::size_t(kind)]; }
@@ -29,6 +32,7 @@ struct RayCounters {
         for (std::size_t k = 0; k < kRayKinds; ++k) rays[k] += o.rays[k];
         light_terms += o.light_terms;
         specular_terms += o.specular_terms;
+        nonfinite_samples += o.nonfinite_samples;
         return *this;
     }
 };

@@ -1,5 +1,7 @@
 #include "geometry/mesh.hpp"
 
+#include "geometry/limits.hpp"
+
 #include <cmath>
 #include <stdexcept>
 
@@ -9,8 +11,10 @@ void validate(const MeshData& mesh, const std::string& what) {
     if (mesh.triangles.empty()) throw std::invalid_argument(what + ": mesh has no triangles");
     for (std::size_t i = 0; i < mesh.positions.size(); ++i) {
         const Vec3& p = mesh.positions[i];
-        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
-            throw std::invalid_argument(what + ": vertex " + std::to_string(i) + " is not finite");
+        for (int k = 0; k < 3; ++k)
+            if (!limits::contains(limits::coordinate, double(p[k])))
+                throw std::invalid_argument(what + ": vertex " + std::to_string(i + 1) + ": " +
+                                            limits::refuse(limits::coordinate, double(p[k])));
     }
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
         for (std::uint32_t v : mesh.triangles[i])

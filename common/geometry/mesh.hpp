@@ -17,7 +17,7 @@ struct MeshData {
 };
 
 // Throws std::invalid_argument naming the first problem: an index out of range, a
-// non-finite position, no triangles.
+// position outside limits::coordinate (or not finite), no triangles.
 void validate(const MeshData& mesh, const std::string& what);
 
 // Which triangle a ray met, and where.

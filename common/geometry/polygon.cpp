@@ -61,9 +61,8 @@ Polygon::Polygon(std::vector<Vec3> vertices) : vertices_(std::move(vertices)) {
     const std::string what = "polygon";
     const std::size_t m = vertices_.size();
     if (m < 3) throw std::invalid_argument(what + ": needs at least 3 vertices, has " + std::to_string(m));
-    if (m > std::size_t(limits::polygon_vertices.max))
-        throw std::invalid_argument(what + ": has " + std::to_string(m) + " vertices, more than the limit of " +
-                                    std::to_string(limits::polygon_vertices.max));
+    if (!limits::contains(limits::polygon_vertices, double(m)))
+        throw std::invalid_argument(what + ": " + limits::refuse(limits::polygon_vertices, double(m)));
     for (std::size_t i = 0; i < m; ++i) {
         const Vec3& p = vertices_[i];
         if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))

@@ -14,9 +14,7 @@ namespace rt {
 namespace {
 
 void check(const limits::Range& range, long long value) {
-    if (value < range.min || value > range.max)
-        throw std::invalid_argument(std::string(range.name) + " must be " + std::to_string(range.min) + ".." +
-                                    std::to_string(range.max) + ", not " + std::to_string(value));
+    if (!limits::contains(range, double(value))) throw std::invalid_argument(limits::refuse(range, double(value)));
 }
 
 }  // namespace

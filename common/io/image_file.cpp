@@ -3,17 +3,44 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include "io/input_file.hpp"
+
 #include <unistd.h>
+
+#include <algorithm>
+#include <cctype>
 #include <cerrno>
+#include <csignal>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <stdexcept>
 
 namespace rt {
+
+namespace {
+
+// The temporary file being written, for the signal handler: a fixed buffer, since a
+// handler may not allocate.
+char g_temporary[4096];
+volatile std::sig_atomic_t g_writing = 0;
+
+extern "C" void on_interrupt(int signal) {
+    if (g_writing) ::unlink(g_temporary);
+    std::signal(signal, SIG_DFL);
+    std::raise(signal);
+}
+
+}  // namespace
+
+void remove_temporaries_on_interrupt() {
+    std::signal(SIGINT, on_interrupt);
+    std::signal(SIGTERM, on_interrupt);
+}
 
 void write_file_atomically(const std::string& path, const std::string& bytes) {
     namespace fs = std::filesystem;
@@ -26,21 +53,23 @@ void write_file_atomically(const std::string& path, const std::string& bytes) {
     }
     // The temporary lives in the target's directory so that rename() stays atomic.
     const std::string tmp = path + ".tmp." + std::to_string(::getpid());
+    if (tmp.size() >= sizeof g_temporary) throw std::runtime_error("cannot write " + path + ": path too long");
+    std::memcpy(g_temporary, tmp.c_str(), tmp.size() + 1);
+    g_writing = 1;
+    const auto fail = [&](const std::string& why) {
+        std::remove(tmp.c_str());
+        g_writing = 0;
+        throw std::runtime_error("cannot write " + path + ": " + why);
+    };
     {
         std::ofstream out(tmp, std::ios::binary | std::ios::trunc);
-        if (!out) throw std::runtime_error("cannot write " + path + ": " + std::strerror(errno));
+        if (!out) fail(std::strerror(errno));
         out.write(bytes.data(), std::streamsize(bytes.size()));
         out.flush();
-        if (!out) {
-            std::remove(tmp.c_str());
-            throw std::runtime_error("cannot write " + path + ": write failed");
-        }
+        if (!out) fail("write failed");
     }
-    if (std::rename(tmp.c_str(), path.c_str()) != 0) {
-        const std::string why = std::strerror(errno);
-        std::remove(tmp.c_str());
-        throw std::runtime_error("cannot write " + path + ": " + why);
-    }
+    if (std::rename(tmp.c_str(), path.c_str()) != 0) fail(std::strerror(errno));
+    g_writing = 0;
 }
 
 namespace {
@@ -90,36 +119,102 @@ void write_image(const Image& image, const std::string& path) {
     return write_pfm(image, path);
 }
 
-Image read_png(const std::string& path) {
+namespace {
+
+[[noreturn]] void refuse(const std::string& name, const std::string& why) {
+    throw std::runtime_error("cannot read image " + name + ": " + why);
+}
+
+void check_size(const std::string& name, double w, double h) {
+    if (!limits::contains(limits::image_side, w) || !limits::contains(limits::image_side, h))
+        refuse(name, limits::refuse(limits::image_side, std::max(w, h)));
+    if (!limits::contains(limits::image_pixels, w * h)) refuse(name, limits::refuse(limits::image_pixels, w * h));
+}
+
+constexpr char kPngSignature[] = "\x89PNG\r\n\x1a\n";
+
+}  // namespace
+
+Image decode_png(const std::string& bytes, const std::string& name) {
+    // Only PNG reaches stb: its other decoders are not what this function promises.
+    if (bytes.compare(0, 8, kPngSignature, 8) != 0) refuse(name, "not a PNG file");
+    if (bytes.size() > std::size_t(std::numeric_limits<int>::max())) refuse(name, "file too large");
+    const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
+    const int size = int(bytes.size());
     int w = 0, h = 0, channels = 0;
-    unsigned char* data = stbi_load(path.c_str(), &w, &h, &channels, 3);
-    if (!data) throw std::runtime_error("cannot read image " + path + ": " + stbi_failure_reason());
+    if (!stbi_info_from_memory(data, size, &w, &h, &channels)) refuse(name, stbi_failure_reason());
+    check_size(name, w, h);  // before stb allocates the pixels
+    unsigned char* pixels = stbi_load_from_memory(data, size, &w, &h, &channels, 3);
+    if (!pixels) refuse(name, stbi_failure_reason());
     Image image(w, h);
     for (std::size_t i = 0; i < image.pixels.size(); ++i)
-        for (int c = 0; c < 3; ++c) image.pixels[i][c] = srgb_to_linear(data[3 * i + std::size_t(c)] / 255.0f);
-    stbi_image_free(data);
+        for (int c = 0; c < 3; ++c) image.pixels[i][c] = srgb_to_linear(pixels[3 * i + std::size_t(c)] / 255.0f);
+    stbi_image_free(pixels);
     return image;
 }
 
-Image read_pfm(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw std::runtime_error("cannot read image " + path + ": " + std::strerror(errno));
-    std::string magic;
-    int w = 0, h = 0;
-    double scale = 0;
-    in >> magic >> w >> h >> scale;
-    in.get();  // the single whitespace byte after the header
-    if (!in || magic != "PF" || w <= 0 || h <= 0 || w > 65536 || h > 65536 || scale >= 0)
-        throw std::runtime_error("cannot read image " + path + ": not a little-endian colour PFM");
-    Image image(w, h);
-    for (int y = h - 1; y >= 0; --y)
-        for (int x = 0; x < w; ++x) {
+Image decode_pfm(const std::string& bytes, const std::string& name) {
+    // The header: "PF", width, height, scale (negative: little-endian), each after white
+    // space, then exactly one white-space byte before the pixels.
+    std::size_t i = 0;
+    const auto token = [&] {
+        while (i < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[i]))) ++i;
+        const std::size_t begin = i;
+        while (i < bytes.size() && i - begin < 32 && !std::isspace(static_cast<unsigned char>(bytes[i]))) ++i;
+        return bytes.substr(begin, i - begin);
+    };
+    const std::string magic = token(), ws = token(), hs = token(), scale = token();
+    const auto whole = [](const std::string& s) {
+        return !s.empty() && s.size() <= 6 && s.find_first_not_of("0123456789") == std::string::npos ? std::stod(s)
+                                                                                                     : -1.0;
+    };
+    const double w = whole(ws), h = whole(hs);
+    if (magic != "PF" || w < 0 || h < 0 || scale.empty() || scale[0] != '-' || i >= bytes.size())
+        refuse(name, "not a little-endian colour PFM");
+    check_size(name, w, h);
+    ++i;  // the single white-space byte after the header
+    const std::size_t count = std::size_t(w) * std::size_t(h) * 3;
+    if (bytes.size() - i != count * sizeof(float))
+        refuse(name, "holds " + std::to_string(bytes.size() - i) + " bytes of pixels, not " +
+                         std::to_string(count * sizeof(float)) + " for " + ws + "x" + hs);
+    Image image{int(w), int(h)};
+    const char* src = bytes.data() + i;
+    for (int y = image.height - 1; y >= 0; --y)  // PFM stores rows bottom to top
+        for (int x = 0; x < image.width; ++x) {
             float rgb[3];
-            if (!in.read(reinterpret_cast<char*>(rgb), sizeof rgb))
-                throw std::runtime_error("cannot read image " + path + ": file is truncated");
+            std::memcpy(rgb, src, sizeof rgb);
+            src += sizeof rgb;
+            if (!std::isfinite(rgb[0]) || !std::isfinite(rgb[1]) || !std::isfinite(rgb[2]))
+                refuse(name, "pixel " + std::to_string(x) + "," + std::to_string(y) + " is not finite");
             image.at(x, y) = Color(rgb[0], rgb[1], rgb[2]);
         }
     return image;
+}
+
+Image decode_image(const std::string& bytes, const std::string& name) {
+    return bytes.compare(0, 2, "PF") == 0 ? decode_pfm(bytes, name) : decode_png(bytes, name);
+}
+
+namespace {
+
+std::string image_bytes(const std::string& path) {
+    try {
+        return read_input_file(path, "image", limits::image_file_bytes);
+    } catch (const std::runtime_error& e) {
+        throw std::runtime_error(std::string("cannot read ") + e.what());  // "cannot read image PATH: ..."
+    }
+}
+
+}  // namespace
+
+Image read_png(const std::string& path) {
+    return decode_png(image_bytes(path), path);
+}
+Image read_pfm(const std::string& path) {
+    return decode_pfm(image_bytes(path), path);
+}
+Image read_image(const std::string& path) {
+    return decode_image(image_bytes(path), path);
 }
 
 }  // namespace rt

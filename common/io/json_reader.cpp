@@ -10,15 +10,14 @@ namespace rt {
 using nlohmann::json;
 
 JsonReader::JsonReader(const std::string& text, std::string filename, std::string base_dir)
-    : locations_(json_locations(text)), filename_(std::move(filename)), base_dir_(std::move(base_dir)) {}
+    : text_(text), filename_(std::move(filename)), base_dir_(std::move(base_dir)) {}
 
 void JsonReader::fail(const std::string& pointer, const std::string& message) const {
     TextPosition p;
     std::string at = pointer;
     while (true) {
-        auto it = locations_.find(at);
-        if (it != locations_.end()) {
-            p = it->second;
+        if (const auto found = locate(text_, at)) {
+            p = *found;
             break;
         }
         if (at.empty()) break;
@@ -73,35 +72,36 @@ std::string Fields::text(const char* key, const std::string& fallback) const {
     return has(key) ? text(key) : fallback;
 }
 
-Real Fields::number_at(const json& v, const std::string& ptr) const {
+double Fields::number_at(const json& v, const std::string& ptr, const limits::Range& range, bool as_float) const {
     if (!v.is_number()) reader_.fail(ptr, "must be a number");
     const double d = v.get<double>();
-    if (!std::isfinite(d)) reader_.fail(ptr, "must be finite");
-    return Real(d);
+    // Every range of limits.hpp lies well inside float's, so a value in range stays finite
+    // (and non-zero, where the range is) in the type it is stored in: a colour is a float
+    // even when geometry is double. The second test says so where it matters.
+    const double stored = as_float ? double(float(d)) : double(Real(d));
+    if (!limits::contains(range, d) || !std::isfinite(stored) || (range.min > 0 && !(stored > 0)))
+        reader_.fail(ptr, limits::refuse(range, d));
+    return stored;
 }
-Real Fields::number(const char* key) const {
-    return number_at(need(key), pointer(key));
+Real Fields::number(const char* key, const limits::Range& range) const {
+    return Real(number_at(need(key), pointer(key), range, false));
 }
-Real Fields::number(const char* key, Real fallback) const {
-    return has(key) ? number(key) : fallback;
+Real Fields::number(const char* key, const limits::Range& range, Real fallback) const {
+    return has(key) ? number(key, range) : fallback;
 }
 
-Real Fields::positive(const char* key) const {
-    const Real v = number(key);
-    if (!(v > 0)) fail(key, "must be > 0");
-    return v;
+Real Fields::length(const char* key) const {
+    return number(key, limits::length);
 }
-Real Fields::positive(const char* key, Real fallback) const {
-    return has(key) ? positive(key) : fallback;
+Real Fields::length(const char* key, Real fallback) const {
+    return has(key) ? length(key) : fallback;
 }
 
 int Fields::integer(const char* key, const limits::Range& range) const {
     const json& v = need(key);
     if (!v.is_number_integer()) fail(key, "must be a whole number");
     const auto n = v.get<long long>();
-    if (n < range.min || n > range.max)
-        fail(key,
-             std::string(range.name) + " must be in " + std::to_string(range.min) + ".." + std::to_string(range.max));
+    if (!limits::contains(range, double(n))) fail(key, limits::refuse(range, double(n)));
     return int(n);
 }
 int Fields::integer(const char* key, const limits::Range& range, int fallback) const {
@@ -110,7 +110,10 @@ int Fields::integer(const char* key, const limits::Range& range, int fallback) c
 
 Vec3 Fields::vec3_at(const json& v, const std::string& ptr) const {
     if (!v.is_array() || v.size() != 3) reader_.fail(ptr, "must be an array of 3 numbers");
-    return Vec3(number_at(v[0], ptr + "/0"), number_at(v[1], ptr + "/1"), number_at(v[2], ptr + "/2"));
+    Vec3 r;
+    for (int k = 0; k < 3; ++k)
+        r[k] = Real(number_at(v[std::size_t(k)], ptr + "/" + std::to_string(k), limits::coordinate, false));
+    return r;
 }
 Vec3 Fields::vec3(const char* key) const {
     return vec3_at(need(key), pointer(key));
@@ -119,11 +122,21 @@ Vec3 Fields::vec3(const char* key, const Vec3& fallback) const {
     return has(key) ? vec3(key) : fallback;
 }
 
-Color Fields::color(const char* key, const Color& fallback) const {
+Vec3 Fields::direction(const char* key) const {
+    const Vec3 d = vec3(key);
+    if (d == Vec3(0)) fail(key, "must not be zero");
+    return d;
+}
+
+Color Fields::color(const char* key, const limits::Range& range, const Color& fallback) const {
     if (!has(key)) return fallback;
-    const Vec3 c = vec3(key);
-    if (c.x < 0 || c.y < 0 || c.z < 0) fail(key, "colour components must be >= 0");
-    return Color(c);
+    const json& v = need(key);
+    const std::string ptr = pointer(key);
+    if (!v.is_array() || v.size() != 3) fail(key, "must be an array of 3 numbers");
+    Color c;
+    for (int k = 0; k < 3; ++k)
+        c[k] = float(number_at(v[std::size_t(k)], ptr + "/" + std::to_string(k), range, true));
+    return c;
 }
 
 std::vector<Vec3> Fields::points(const char* key, const limits::Range& range) const {
@@ -132,8 +145,7 @@ std::vector<Vec3> Fields::points(const char* key, const limits::Range& range) co
     if (!v.is_array()) fail(key, "must be an array of points");
     if (v.size() < lo || v.size() > hi)
         fail(key, lo == hi ? "must be an array of " + std::to_string(lo) + " points"
-                           : "must be an array of " + std::to_string(lo) + ".." + std::to_string(hi) + " points (" +
-                                 range.name + "), not " + std::to_string(v.size()));
+                           : "must be an array of points: " + limits::refuse(range, double(v.size())));
     std::vector<Vec3> result;
     result.reserve(v.size());
     for (std::size_t i = 0; i < v.size(); ++i) result.push_back(vec3_at(v[i], pointer(key) + "/" + std::to_string(i)));

@@ -9,7 +9,6 @@
 #include <nlohmann/json_fwd.hpp>
 
 #include <initializer_list>
-#include <map>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -32,7 +31,7 @@ public:
     const std::string& base_dir() const { return base_dir_; }
 
 private:
-    std::map<std::string, TextPosition> locations_;
+    std::string text_;  // positions are looked up in it only when something fails
     std::string filename_;
     std::string base_dir_;
 };
@@ -51,15 +50,21 @@ public:
     bool has(const char* key) const;
     std::string text(const char* key) const;
     std::string text(const char* key, const std::string& fallback) const;
-    Real number(const char* key) const;
-    Real number(const char* key, Real fallback) const;
-    Real positive(const char* key) const;
-    Real positive(const char* key, Real fallback) const;
+    // Every number is checked against its range of limits.hpp in the type it is stored in.
+    Real number(const char* key, const limits::Range& range) const;
+    Real number(const char* key, const limits::Range& range, Real fallback) const;
+    // A radius, a size, a scale: limits::length.
+    Real length(const char* key) const;
+    Real length(const char* key, Real fallback) const;
     int integer(const char* key, const limits::Range& range) const;
     int integer(const char* key, const limits::Range& range, int fallback) const;
+    // A point or a vector, each component a limits::coordinate.
     Vec3 vec3(const char* key) const;
     Vec3 vec3(const char* key, const Vec3& fallback) const;
-    Color color(const char* key, const Color& fallback) const;
+    // A direction: a vec3 that is not zero.
+    Vec3 direction(const char* key) const;
+    // A colour, each component in `range` (limits::reflectance or limits::radiance).
+    Color color(const char* key, const limits::Range& range, const Color& fallback) const;
     // An array of points whose length is in `range`.
     std::vector<Vec3> points(const char* key, const limits::Range& range) const;
     // A file name, relative to the scene file's directory unless absolute.
@@ -73,7 +78,8 @@ public:
 
 private:
     const nlohmann::json& need(const char* key) const;
-    Real number_at(const nlohmann::json& value, const std::string& pointer) const;
+    double number_at(const nlohmann::json& value, const std::string& pointer, const limits::Range& range,
+                     bool as_float) const;
     Vec3 vec3_at(const nlohmann::json& value, const std::string& pointer) const;
 
     const JsonReader& reader_;

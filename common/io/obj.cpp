@@ -1,24 +1,90 @@
 #include "io/obj.hpp"
 
+#include "io/input_file.hpp"
+
 #include <tiny_obj_loader.h>
 
-#include <filesystem>
+#include <cctype>
+#include <sstream>
 #include <stdexcept>
 
 namespace rt {
 
-MeshData load_obj(const std::string& path) {
-    if (!std::filesystem::is_regular_file(path)) throw std::runtime_error("mesh " + path + ": no such file");
+namespace {
+
+[[noreturn]] void fail(const std::string& name, std::size_t line, const std::string& message) {
+    throw std::runtime_error("mesh " + name + (line ? ":" + std::to_string(line) : std::string()) + ": " + message);
+}
+
+// One pass over the text before tinyobjloader sees it, for what the loader cannot report:
+// it keeps face indices in an int (99999999999 wraps round) and gives no line numbers. Also
+// enforces the count limits before any memory is spent on them.
+void check_counts_and_indices(const std::string& text, const std::string& name) {
+    std::istringstream in(text);
+    std::string line;
+    std::size_t number = 0;
+    double vertices = 0, triangles = 0;
+    long long highest = 0;  // the highest positive index, and where it is
+    std::size_t highest_line = 0;
+    while (std::getline(in, line)) {
+        ++number;
+        std::size_t i = line.find_first_not_of(" \t");
+        if (i == std::string::npos || i + 1 >= line.size() || !std::isspace(static_cast<unsigned char>(line[i + 1])))
+            continue;
+        if (line[i] == 'v') {
+            if (++vertices > limits::mesh_vertices.max)
+                fail(name, number, limits::refuse(limits::mesh_vertices, vertices));
+            continue;
+        }
+        if (line[i] != 'f') continue;
+        std::istringstream corners(line.substr(i + 1));
+        std::string corner;
+        int count = 0;
+        while (corners >> corner) {
+            ++count;
+            // The vertex index: an optional sign and digits, before any '/'.
+            std::size_t k = 0;
+            const bool negative = corner[0] == '-';
+            if (corner[0] == '-' || corner[0] == '+') ++k;
+            long long index = 0;
+            bool digits = false;
+            for (; k < corner.size() && std::isdigit(static_cast<unsigned char>(corner[k])); ++k) {
+                digits = true;
+                index = index < 1000000000000LL ? index * 10 + (corner[k] - '0') : index;  // saturate
+            }
+            if (!digits) fail(name, number, "face corner '" + corner.substr(0, 40) + "' has no vertex index");
+            if (index == 0) fail(name, number, "vertex index 0 (OBJ counts vertices from 1)");
+            if (negative && double(index) > vertices)
+                fail(name, number,
+                     "vertex index -" + std::to_string(index) + " reaches before the first vertex (" +
+                         std::to_string(std::size_t(vertices)) + " so far)");
+            if (!negative && index > highest) highest = index, highest_line = number;
+        }
+        if (count < 3) fail(name, number, "a face needs at least 3 corners, this one has " + std::to_string(count));
+        triangles += count - 2;
+        if (triangles > limits::mesh_triangles.max) fail(name, number, limits::refuse(limits::mesh_triangles, triangles));
+    }
+    if (double(highest) > vertices)
+        fail(name, highest_line,
+             "vertex index " + (highest >= 1000000000000LL ? std::string("past 10^12") : std::to_string(highest)) +
+                 ", but the file has " + std::to_string(std::size_t(vertices)) + " vertices");
+}
+
+}  // namespace
+
+MeshData load_obj_text(const std::string& text, const std::string& name) {
+    check_counts_and_indices(text, name);
     tinyobj::ObjReaderConfig config;
-    config.triangulate = true;
+    config.triangulate = false;  // fanned below: tinyobjloader's triangulation is quadratic in a face's size
     config.vertex_color = false;
     tinyobj::ObjReader reader;
-    if (!reader.ParseFromFile(path, config)) {
+    // From a string: "mtllib" lines must not make the loader open other files.
+    if (!reader.ParseFromString(text, "", config)) {
         std::string why = reader.Error();
         while (!why.empty() && (why.back() == '\n' || why.back() == '\r')) why.pop_back();
         const auto newline = why.find('\n');
         if (newline != std::string::npos) why = why.substr(0, newline);
-        throw std::runtime_error("mesh " + path + ": " + (why.empty() ? "not a valid OBJ file" : why));
+        fail(name, 0, why.empty() ? "not a valid OBJ file" : why);
     }
     const auto& positions = reader.GetAttrib().vertices;
     MeshData mesh;
@@ -29,26 +95,27 @@ MeshData load_obj(const std::string& path) {
         const auto& idx = shape.mesh.indices;
         std::size_t offset = 0;
         for (const auto corners : shape.mesh.num_face_vertices) {
-            if (corners == 3) {
-                const auto v = [&](std::size_t k) {
-                    const int i = idx[offset + k].vertex_index;
-                    if (i < 0 || std::size_t(i) >= mesh.positions.size())
-                        throw std::runtime_error("mesh " + path + ": a face uses vertex " + std::to_string(i + 1) +
-                                                 " of " + std::to_string(mesh.positions.size()));
-                    return std::uint32_t(i);
-                };
-                mesh.triangles.push_back({v(0), v(1), v(2)});
-            }
+            const auto v = [&](std::size_t k) {
+                const int i = idx[offset + k].vertex_index;
+                if (i < 0 || std::size_t(i) >= mesh.positions.size())  // the check above makes this unreachable
+                    fail(name, 0, "a face uses a vertex the file does not have");
+                return std::uint32_t(i);
+            };
+            for (std::size_t k = 1; k + 1 < corners; ++k) mesh.triangles.push_back({v(0), v(k), v(k + 1)});
             offset += corners;
         }
     }
-    if (mesh.triangles.empty()) throw std::runtime_error("mesh " + path + ": no triangles in the file");
+    if (mesh.triangles.empty()) fail(name, 0, "no triangles in the file");
     try {
-        validate(mesh, "mesh " + path);
+        validate(mesh, "mesh " + name);
     } catch (const std::invalid_argument& e) {
         throw std::runtime_error(e.what());
     }
     return mesh;
+}
+
+MeshData load_obj(const std::string& path) {
+    return load_obj_text(read_input_file(path, "mesh", limits::obj_file_bytes), path);
 }
 
 }  // namespace rt

@@ -1,5 +1,6 @@
 #include "io/scene_file.hpp"
 
+#include "io/input_file.hpp"
 #include "io/json_locations.hpp"
 #include "io/scene_types.hpp"
 #include "render/integrators.hpp"
@@ -7,9 +8,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
-#include <fstream>
 #include <map>
-#include <sstream>
 
 namespace rt {
 
@@ -28,10 +27,9 @@ Camera read_camera(const Fields& f) {
     cam.eye = f.vec3("eye");
     cam.target = f.vec3("target");
     cam.up = f.vec3("up", cam.up);
-    cam.vertical_fov_degrees = f.positive("fov", cam.vertical_fov_degrees);
-    if (cam.vertical_fov_degrees >= 180) f.fail("fov", "must be less than 180 degrees");
-    cam.window_height = f.positive("window_height", cam.window_height);
-    cam.focal_distance = f.positive("focal_distance", cam.focal_distance);
+    cam.vertical_fov_degrees = f.number("fov", limits::field_of_view, cam.vertical_fov_degrees);
+    cam.window_height = f.length("window_height", cam.window_height);
+    cam.focal_distance = f.length("focal_distance", cam.focal_distance);
     try {
         cam.validate();
     } catch (const std::invalid_argument& e) {
@@ -48,7 +46,7 @@ Light read_light(const Fields& f) {
         keys.insert(keys.end(), t.keys.begin(), t.keys.end());
         f.only(keys);
         Light light = t.read(f);
-        light.color = f.color("color", light.color);
+        light.color = f.color("color", limits::radiance, light.color);
         return light;
     }
     f.fail("type", "unknown light type \"" + type + "\" (expected " + type_names(light_types()) + ")");
@@ -71,16 +69,26 @@ Shape read_shape(const Fields& f) {
     f.fail("type", "unknown surface type \"" + type + "\" (expected " + type_names(surface_types()) + ")");
 }
 
+std::string where(const std::string& text, const std::string& filename, std::size_t offset) {
+    const TextPosition p = position_of(text, offset);
+    return filename + ":" + std::to_string(p.line) + ":" + std::to_string(p.column) + ": ";
+}
+
 json parse(const std::string& text, const std::string& filename) {
+    // Before the parser: what it would accept but we could not hold (1e400 overflows a double)
+    // or should not (nesting without end costs memory and time, and means nothing here).
+    if (const auto problem = check_json_text(text))
+        throw SceneError(where(text, filename, problem->offset) + (problem->pointer.empty() ? "/" : problem->pointer) +
+                         ": " + problem->message);
     try {
         return json::parse(text);
     } catch (const json::parse_error& e) {
-        const TextPosition p = position_of(text, e.byte > 0 ? e.byte - 1 : 0);
         std::string what = e.what();
         const auto colon = what.rfind(": ");  // drop nlohmann's "[json.exception...] parse error at ..." prefix
         if (colon != std::string::npos) what = what.substr(colon + 2);
-        throw SceneError(filename + ":" + std::to_string(p.line) + ":" + std::to_string(p.column) +
-                         ": not valid JSON: " + what);
+        throw SceneError(where(text, filename, e.byte > 0 ? e.byte - 1 : 0) + "not valid JSON: " + what);
+    } catch (const json::exception& e) {  // anything the check above missed: still one line, exit 2
+        throw SceneError(filename + ": not valid JSON: " + e.what());
     }
 }
 
@@ -103,8 +111,8 @@ Scene load_scene_text(const std::string& text, const std::string& filename, cons
     scene.integrator = make_integrator(shading);
     if (!scene.integrator)
         top.fail("shading", "unknown shading \"" + shading + "\" (expected phong, normal, barycentric or direction)");
-    scene.background = top.color("background", scene.background);
-    scene.ambient = top.color("ambient", scene.ambient);
+    scene.background = top.color("background", limits::radiance, scene.background);
+    scene.ambient = top.color("ambient", limits::radiance, scene.ambient);
 
     // Materials by name; only those a surface uses are kept, numbered from 1 (0 is the default).
     std::map<std::string, Material> materials;
@@ -154,12 +162,14 @@ Scene load_scene_text(const std::string& text, const std::string& filename, cons
 }
 
 Scene load_scene_file(const std::string& path, SceneSummary* summary) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) throw SceneError(path + ": cannot open scene file");
-    std::ostringstream text;
-    text << in.rdbuf();
+    std::string text;
+    try {
+        text = read_input_file(path, "scene file", limits::scene_file_bytes);
+    } catch (const std::runtime_error& e) {
+        throw SceneError(e.what());
+    }
     const std::string dir = std::filesystem::path(path).parent_path().string();
-    return load_scene_text(text.str(), path, dir.empty() ? "." : dir, summary);
+    return load_scene_text(text, path, dir.empty() ? "." : dir, summary);
 }
 
 }  // namespace rt

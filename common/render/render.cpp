@@ -1,5 +1,7 @@
 #include "render/render.hpp"
 
+#include "geometry/limits.hpp"
+
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -7,6 +9,7 @@
 #include <algorithm>
 #include <atomic>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <mutex>
 #include <stdexcept>
@@ -53,12 +56,24 @@ private:
 };
 
 void check(const Scene& scene, const RenderOptions& o) {
-    if (o.width < 1 || o.height < 1) throw std::invalid_argument("image size must be at least 1x1");
-    if (o.spp < 1) throw std::invalid_argument("spp must be at least 1");
+    check_budget(o);
     if (!scene.integrator) throw std::invalid_argument("scene '" + scene.name + "' has no integrator");
 }
 
 }  // namespace
+
+void check_budget(const RenderOptions& o) {
+    const auto in = [](const limits::Range& r, double v, const char* what) {
+        if (!limits::contains(r, v)) throw std::invalid_argument(std::string(what) + ": " + limits::refuse(r, v));
+    };
+    in(limits::image_side, o.width, "--width");
+    in(limits::image_side, o.height, "--height");
+    in(limits::samples_per_pixel, o.spp, "--spp");
+    in(limits::threads, o.threads, "--threads");
+    const double pixels = double(o.width) * double(o.height);
+    in(limits::image_pixels, pixels, "--width x --height");
+    in(limits::image_samples, pixels * double(o.spp), "--width x --height x --spp");
+}
 
 CameraSample camera_sample(int i, int j, int spp, Sampler& sampler) {
     if (spp == 1) return {Vec2(Real(i) + Real(0.5), Real(j) + Real(0.5))};
@@ -92,7 +107,13 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
                     const Ray ray = view.ray(camera_sample(i, j, o.spp, sampler));
                     counters.count(RayKind::camera);
                     TraceContext context{sampler, counters};
-                    sum += integrator.Li(scene, ray, context);
+                    const Color L = integrator.Li(scene, ray, context);
+                    // The image holds finite values whatever goes wrong upstream; --stats
+                    // counts what was left out.
+                    if (std::isfinite(L.r + L.g + L.b))
+                        sum += L;
+                    else
+                        ++counters.nonfinite_samples;
                 }
                 result.image.at(i, y) = sum / float(o.spp);
             }

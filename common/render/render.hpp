@@ -23,6 +23,10 @@ struct RenderResult {
     int threads = 0;  // worker threads actually used
 };
 
+// Throws std::invalid_argument unless the image size, samples and threads are within
+// limits.hpp: a render that would take unbounded memory or time is refused before it starts.
+void check_budget(const RenderOptions& options);
+
 // The one render loop: square tiles spread over the cores by TBB, each pixel with its own
 // sampler. Exceptions from the integrator (an unfinished exercise) reach the caller.
 RenderResult render(const Scene& scene, const RenderOptions& options);

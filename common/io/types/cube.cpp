@@ -6,7 +6,7 @@ namespace rt {
 
 Shape read_cube(const Fields& f) {
     return Mesh(
-        subdivided_cube(f.vec3("center"), f.positive("size"), f.integer("subdivisions", limits::cube_subdivisions, 1)));
+        subdivided_cube(f.vec3("center"), f.length("size"), f.integer("subdivisions", limits::cube_subdivisions, 1)));
 }
 
 }  // namespace rt

@@ -7,8 +7,7 @@ namespace rt {
 Light read_directional_light(const Fields& f) {
     Light l;
     l.type = Light::Type::directional;
-    l.direction = f.vec3("direction");
-    if (glm::dot(l.direction, l.direction) == 0) f.fail("direction", "must not be zero");
+    l.direction = f.direction("direction");
     return l;
 }
 

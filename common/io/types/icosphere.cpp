@@ -5,7 +5,7 @@
 namespace rt {
 
 Shape read_icosphere(const Fields& f) {
-    return Mesh(icosphere(f.vec3("center"), f.positive("radius"),
+    return Mesh(icosphere(f.vec3("center"), f.length("radius"),
                           f.integer("subdivisions", limits::icosphere_subdivisions, 2)));
 }
 

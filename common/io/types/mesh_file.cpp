@@ -12,7 +12,7 @@ Shape read_mesh_file(const Fields& f) {
     } catch (const std::runtime_error& e) {
         f.fail("file", e.what());
     }
-    const Real scale = f.positive("scale", 1);
+    const Real scale = f.length("scale", 1);
     const Vec3 translate = f.vec3("translate", Vec3(0));
     for (Vec3& p : data.positions) p = p * scale + translate;
     return Mesh(std::move(data));

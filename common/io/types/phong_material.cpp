@@ -6,9 +6,9 @@ namespace rt {
 Material read_material(const Fields& f) {
     f.only({"diffuse", "specular", "exponent"});
     Material m;
-    m.diffuse = f.color("diffuse", m.diffuse);
-    m.specular = f.color("specular", m.specular);
-    m.exponent = float(f.positive("exponent", Real(m.exponent)));
+    m.diffuse = f.color("diffuse", limits::reflectance, m.diffuse);
+    m.specular = f.color("specular", limits::reflectance, m.specular);
+    m.exponent = float(f.number("exponent", limits::exponent, Real(m.exponent)));
     return m;
 }
 

@@ -5,7 +5,7 @@
 namespace rt {
 
 Shape read_soup(const Fields& f) {
-    return Mesh(triangle_soup(f.vec3("center"), f.positive("size"), f.positive("scale"),
+    return Mesh(triangle_soup(f.vec3("center"), f.length("size"), f.length("scale"),
                               f.integer("count", limits::soup_count),
                               std::uint64_t(f.integer("seed", limits::soup_seed, 1))));
 }

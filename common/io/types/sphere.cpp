@@ -4,7 +4,7 @@
 namespace rt {
 
 Shape read_sphere(const Fields& f) {
-    return Sphere(f.vec3("center"), f.positive("radius"));
+    return Sphere(f.vec3("center"), f.length("radius"));
 }
 
 }  // namespace rt

@@ -5,7 +5,7 @@
 namespace rt {
 
 Shape read_terrain(const Fields& f) {
-    return Mesh(terrain(f.vec3("center"), f.positive("size"), f.number("height"),
+    return Mesh(terrain(f.vec3("center"), f.length("size"), f.number("height", limits::coordinate),
                         f.integer("cells", limits::terrain_cells, 64)));
 }
 
