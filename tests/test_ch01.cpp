@@ -141,8 +141,8 @@ TEST_CASE("stress: every pixel's ray passes through its window point, cameras at
     for (double scale : {1.0, 1e2, 1e5}) {
         for (int k = 0; k < 50; ++k) {
             Camera cam;
-            cam.eye = Vec3(Real(scale * unit(rng)), Real(scale * unit(rng)), Real(scale * unit(rng)));
-            cam.target = cam.eye + Vec3(Real(unit(rng)), Real(unit(rng)), Real(unit(rng)));
+            cam.eye = Vec3{Real(scale * unit(rng)), Real(scale * unit(rng)), Real(scale * unit(rng))};
+            cam.target = cam.eye + Vec3{Real(unit(rng)), Real(unit(rng)), Real(unit(rng))};
             cam.vertical_fov_degrees = Real(20 + 100 * (unit(rng) + 1) / 2);
             const View v = cam.view(37, 23);
             for (int i = 0; i < 37; i += 6)

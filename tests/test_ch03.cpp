@@ -70,7 +70,7 @@ TEST_CASE("3.2 misses, the interval, parallel rays and non-unit directions") {
 TEST_CASE("3.1 and 3.2 agree on random rays") {
     pcg32 rng(5);
     std::uniform_real_distribution<double> u(-1, 1);
-    auto rv = [&] { return Vec3(Real(u(rng)), Real(u(rng)), Real(u(rng))); };
+    auto rv = [&] { return Vec3{Real(u(rng)), Real(u(rng)), Real(u(rng))}; };
     int both = 0, disagree = 0, failures = 0;
     for (int k = 0; k < 20000; ++k) {
         const Vec3 a = rv(), b = rv(), c = rv();

@@ -63,7 +63,7 @@ TEST_CASE("4.2 crossing number: convex, concave, either winding") {
     std::uniform_real_distribution<double> u(-1.1, 1.1);
     int inside = 0, failures = 0;
     for (int k = 0; k < 20000; ++k) {
-        const Vec2 p(Real(u(rng)), Real(u(rng)));
+        const Vec2 p{Real(u(rng)), Real(u(rng))};
         const bool want = winding_number(star, p) != 0;
         CAPTURE(p);
         CAPTURE(want);
@@ -154,7 +154,7 @@ TEST_CASE("stress: random regular polygons at scales 1e-3 to 1e3") {
             const Vec3 axis = glm::normalize(Vec3(Real(u(rng) - 0.5), Real(u(rng) - 0.5), Real(u(rng) - 0.5)));
             const Vec3 a = glm::normalize(glm::cross(axis, std::abs(axis.x) < 0.9 ? Vec3(1, 0, 0) : Vec3(0, 1, 0)));
             const Vec3 b = glm::cross(axis, a);
-            const Vec3 center = Real(scale) * Vec3(Real(u(rng)), Real(u(rng)), Real(u(rng)));
+            const Vec3 center = Real(scale) * Vec3{Real(u(rng)), Real(u(rng)), Real(u(rng))};
             std::vector<Vec3> v;
             for (int i = 0; i < n; ++i) {
                 const double t = 2 * M_PI * i / n;

@@ -84,8 +84,8 @@ TEST_CASE("any-hit: occluded agrees with the closest hit on every ray, and respe
     const Vec3 mid = (box.min + box.max) / Real(2), half = (box.max - box.min) / Real(2);
     int disagree = 0, hits = 0;
     for (int k = 0; k < 3000; ++k) {
-        const Vec3 origin = mid + Real(2) * half * Vec3(Real(u(rng)), Real(u(rng)), Real(u(rng)));
-        const Vec3 target = mid + half * Vec3(Real(u(rng)), Real(u(rng)), Real(u(rng)));
+        const Vec3 origin = mid + Real(2) * half * Vec3{Real(u(rng)), Real(u(rng)), Real(u(rng))};
+        const Vec3 target = mid + half * Vec3{Real(u(rng)), Real(u(rng)), Real(u(rng))};
         const Ray r{origin, target - origin};
         HitRecord rec;
         const bool found = scene.hit(r, Interval{}, rec);

@@ -14,7 +14,8 @@ TEST_SUITE("common") {
 TEST_CASE("procedural meshes are closed where they should be, with outward normals") {
     for (const auto& [name, mesh] : {std::pair{"icosphere", icosphere(Vec3(1, 2, 3), 2, 2)},
                                      std::pair{"cube", subdivided_cube(Vec3(1, 2, 3), 2, 3)}}) {
-        CAPTURE(name);
+        const char* shape = name;  // clang 14 cannot capture a structured binding
+        CAPTURE(shape);
         std::map<std::pair<std::uint32_t, std::uint32_t>, int> directed;
         for (const auto& t : mesh.triangles) {
             const Vec3 n =

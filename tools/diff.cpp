@@ -5,6 +5,7 @@
 // R of it in the other image, both ways, so an edge that moved by a pixel is not an error.
 //
 // Exit: 0 within tolerance, 1 past it, 2 bad input.
+#include "core/text.hpp"
 #include "io/image_file.hpp"
 
 #include <CLI/CLI.hpp>
@@ -12,6 +13,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
+#include <filesystem>
 #include <limits>
 #include <vector>
 
@@ -67,20 +70,38 @@ int main(int argc, char** argv) {
     float threshold = 8, max_rmse = -1, max_over = -1, min_psnr = -1, max_error = -1;
     cli.add_option("A", a_path, "first image (e.g. the reference)")->required();
     cli.add_option("B", b_path, "second image (e.g. the render)")->required();
+    // A tolerance is a finite number in range: CLI::Range alone lets "nan" through.
+    const auto within = [](double lo, double hi) {
+        return CLI::Validator(
+            [lo, hi](std::string& value) {
+                char* end = nullptr;
+                const double v = std::strtod(value.c_str(), &end);
+                return end != value.c_str() && *end == '\0' && v >= lo && v <= hi
+                           ? std::string()
+                           : "must be a number in " + std::to_string(int(lo)) + ".." + std::to_string(int(hi)) +
+                                 ", not '" + value + "'";
+            },
+            "");
+    };
     cli.add_option("--heatmap", heatmap, "write a PNG of the per-pixel error here");
     cli.add_option("--radius", radius, "neighbourhood radius in pixels for edge tolerance")->check(CLI::Range(0, 8));
     cli.add_option("--threshold", threshold, "a pixel is 'over' if its error exceeds this many levels")
-        ->check(CLI::Range(0.0f, 255.0f));
-    cli.add_option("--max-rmse", max_rmse, "fail if RMSE (levels) exceeds this");
-    cli.add_option("--max-over", max_over, "fail if more than this percentage of pixels is over the threshold");
-    cli.add_option("--min-psnr", min_psnr, "fail if PSNR (dB) is below this");
-    cli.add_option("--max-error", max_error, "fail if any pixel's error (levels) exceeds this");
+        ->check(within(0, 255));
+    cli.add_option("--max-rmse", max_rmse, "fail if RMSE (levels) exceeds this")->check(within(0, 255));
+    cli.add_option("--max-over", max_over, "fail if more than this percentage of pixels is over the threshold")
+        ->check(within(0, 100));
+    cli.add_option("--min-psnr", min_psnr, "fail if PSNR (dB) is below this")->check(within(0, 1000));
+    cli.add_option("--max-error", max_error, "fail if any pixel's error (levels) exceeds this")->check(within(0, 255));
     try {
         cli.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {
         return cli.exit(e);
     } catch (const CLI::ParseError& e) {
-        std::fprintf(stderr, "rtlab-diff: error: %s\n", e.what());
+        std::fprintf(stderr, "rtlab-diff: error: %s\n", rt::one_line(e.what()).c_str());
+        return 2;
+    }
+    if (!heatmap.empty() && std::filesystem::path(heatmap).extension() != ".png") {
+        std::fprintf(stderr, "rtlab-diff: error: --heatmap: '%s' must end in .png\n", heatmap.c_str());
         return 2;
     }
 
@@ -89,7 +110,7 @@ int main(int argc, char** argv) {
         a = levels(rt::read_image(a_path));
         b = levels(rt::read_image(b_path));
     } catch (const std::exception& e) {
-        std::fprintf(stderr, "rtlab-diff: error: %s\n", e.what());
+        std::fprintf(stderr, "rtlab-diff: error: %s\n", rt::one_line(e.what()).c_str());
         return 2;
     }
     if (a.w != b.w || a.h != b.h) {
@@ -128,7 +149,7 @@ int main(int argc, char** argv) {
         try {
             rt::write_png(map, heatmap);
         } catch (const std::exception& e) {
-            std::fprintf(stderr, "rtlab-diff: error: %s\n", e.what());
+            std::fprintf(stderr, "rtlab-diff: error: %s\n", rt::one_line(e.what()).c_str());
             return 2;
         }
     }

@@ -1,13 +1,18 @@
-# One golden-image test: render SCENE with CHAPTER at RENDER_ARGS into OUTPUT, compare it with
-# REFERENCE by rtlab-diff within TOLERANCE. The diff's report goes to OUTPUT.txt; on failure
+# One golden-image test: render SCENE with CHAPTER at RENDER_ARGS into OUTPUT, check that no
+# sample came out NaN or infinite (--stats), compare it with REFERENCE by rtlab-diff within
+# TOLERANCE. The diff's report goes to OUTPUT.txt; on failure
 # the heatmap stays next to the output as OUTPUT-heatmap.png.
 string(REGEX REPLACE "\\.png$" "" stem "${OUTPUT}")
 file(REMOVE "${OUTPUT}" "${stem}-heatmap.png" "${stem}.txt")
-execute_process(COMMAND ${CHAPTER} --scene ${SCENE} ${RENDER_ARGS} -o ${OUTPUT}
-    RESULT_VARIABLE code ERROR_VARIABLE err)
+execute_process(COMMAND ${CHAPTER} --scene ${SCENE} ${RENDER_ARGS} -o ${OUTPUT} --stats
+    RESULT_VARIABLE code OUTPUT_VARIABLE stats ERROR_VARIABLE err)
 if(NOT code EQUAL 0)
     file(WRITE "${stem}.txt" "render failed: ${err}")
     message(FATAL_ERROR "render of ${SCENE} failed (exit ${code}): ${err}")
+endif()
+string(JSON nonfinite GET "${stats}" nonfinite_samples)
+if(NOT nonfinite EQUAL 0)
+    message(FATAL_ERROR "render of ${SCENE}: ${nonfinite} samples were NaN or infinite")
 endif()
 execute_process(COMMAND ${DIFF} ${REFERENCE} ${OUTPUT} ${TOLERANCE} --heatmap ${stem}-heatmap.png
     RESULT_VARIABLE code OUTPUT_VARIABLE report ERROR_VARIABLE err)

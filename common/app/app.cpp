@@ -1,5 +1,6 @@
 #include "app/app.hpp"
 
+#include "core/text.hpp"
 #include "core/version.hpp"
 #include "io/image_file.hpp"
 #include "geometry/limits.hpp"
@@ -109,7 +110,10 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
         ->check(whole)
         ->check(range(limits::samples_per_pixel))
         ->capture_default_str();
-    cli.add_option("--seed", o.seed, "random seed (images are identical for equal seeds)")->capture_default_str();
+    cli.add_option("--seed", o.seed, "random seed (images are identical for equal seeds)")
+        ->check(whole)
+        ->check(CLI::NonNegativeNumber)
+        ->capture_default_str();
     cli.add_option("--threads", o.threads, "worker threads, 0 = all cores")
         ->check(whole)
         ->check(range(limits::threads))
@@ -128,7 +132,7 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
                                      " track, exercises from solutions/: " + RTLAB_SOLVED_TEXT + ")"));
 
     const auto usage = [&](const std::string& message) {
-        std::fprintf(stderr, "%s: error: %s\n", id_.c_str(), message.c_str());
+        std::fprintf(stderr, "%s: error: %s\n", id_.c_str(), one_line(message).c_str());
         return 2;
     };
     try {
@@ -190,7 +194,7 @@ int ChapterApp::execute(const Invocation& inv) const {
     } catch (const std::exception& e) {
         // Bad input (a scene file, a camera, a value) is exit 2; a render that failed, exit 1.
         const bool bad_input = dynamic_cast<const SceneError*>(&e) || dynamic_cast<const std::invalid_argument*>(&e);
-        std::fprintf(stderr, "%s: error: %s\n", id_.c_str(), e.what());
+        std::fprintf(stderr, "%s: error: %s\n", id_.c_str(), one_line(e.what()).c_str());
         return bad_input ? 2 : 1;
     }
     return 0;

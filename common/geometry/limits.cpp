@@ -7,11 +7,11 @@ namespace rt::limits {
 
 namespace {
 
-// As people write them: 16777216, 179.9, 1e8, 1e-6 (not 1.67772e+07 or 1e-06).
+// As people write them: 16777216, 1000000, 179.9, 1e8, 1e-6 (not 1.67772e+07 or 1e-06).
 std::string number(double v) {
     char buf[40];
     const bool power_of_ten = v != 0 && std::abs(std::log10(std::abs(v)) - std::round(std::log10(std::abs(v)))) < 1e-12;
-    if (std::abs(v) < 1e15 && v == std::floor(v) && !(power_of_ten && std::abs(v) >= 1e6))
+    if (std::abs(v) < 1e15 && v == std::floor(v) && !(power_of_ten && std::abs(v) >= 1e7))
         std::snprintf(buf, sizeof buf, "%.0f", v);
     else
         std::snprintf(buf, sizeof buf, "%.6g", v);

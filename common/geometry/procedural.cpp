@@ -126,10 +126,10 @@ MeshData triangle_soup(const Vec3& center, Real size, Real scale, int count, std
     auto uniform = [&] { return double(rng()) * 0x1p-32; };
     MeshData mesh;
     for (int k = 0; k < count; ++k) {
-        const glm::dvec3 c(uniform() - 0.5, uniform() - 0.5, uniform() - 0.5);
+        const glm::dvec3 c{uniform() - 0.5, uniform() - 0.5, uniform() - 0.5};  // braces: drawn x, y, z in order
         const auto base = std::uint32_t(mesh.positions.size());
         for (int v = 0; v < 3; ++v) {
-            const glm::dvec3 offset(uniform() - 0.5, uniform() - 0.5, uniform() - 0.5);
+            const glm::dvec3 offset{uniform() - 0.5, uniform() - 0.5, uniform() - 0.5};
             mesh.positions.push_back(center + Vec3(c * double(size) + offset * double(scale)));
         }
         mesh.triangles.push_back({base, base + 1, base + 2});

@@ -3,6 +3,7 @@
 #include <stb_image.h>
 #include <stb_image_write.h>
 
+#include "core/text.hpp"
 #include "io/input_file.hpp"
 
 #include <unistd.h>
@@ -109,8 +110,9 @@ void write_pfm(const Image& image, const std::string& path) {
 }
 
 bool is_image_path(const std::string& path) {
-    // A bare ".png" names no file.
-    return path.size() > 4 && (path.ends_with(".png") || path.ends_with(".pfm"));
+    // A bare ".png" names no file: it is a hidden file without an extension.
+    const std::filesystem::path extension = std::filesystem::path(path).extension();
+    return extension == ".png" || extension == ".pfm";
 }
 
 void write_image(const Image& image, const std::string& path) {
@@ -122,12 +124,12 @@ void write_image(const Image& image, const std::string& path) {
 namespace {
 
 [[noreturn]] void refuse(const std::string& name, const std::string& why) {
-    throw std::runtime_error("cannot read image " + name + ": " + why);
+    throw std::runtime_error(one_line("cannot read image " + name + ": " + why));
 }
 
 void check_size(const std::string& name, double w, double h) {
-    if (!limits::contains(limits::image_side, w) || !limits::contains(limits::image_side, h))
-        refuse(name, limits::refuse(limits::image_side, std::max(w, h)));
+    for (const double side : {w, h})
+        if (!limits::contains(limits::image_side, side)) refuse(name, limits::refuse(limits::image_side, side));
     if (!limits::contains(limits::image_pixels, w * h)) refuse(name, limits::refuse(limits::image_pixels, w * h));
 }
 
@@ -141,9 +143,19 @@ Image decode_png(const std::string& bytes, const std::string& name) {
     if (bytes.size() > std::size_t(std::numeric_limits<int>::max())) refuse(name, "file too large");
     const auto* data = reinterpret_cast<const unsigned char*>(bytes.data());
     const int size = int(bytes.size());
+    // The size, from the header chunk that must come first, before stb allocates anything
+    // (stb's own refusal of a huge image says only "unknown image type").
+    if (bytes.size() >= 24 && bytes.compare(12, 4, "IHDR") == 0) {
+        const auto be32 = [&](std::size_t at) {
+            double v = 0;
+            for (std::size_t k = 0; k < 4; ++k) v = v * 256 + static_cast<unsigned char>(bytes[at + k]);
+            return v;
+        };
+        check_size(name, be32(16), be32(20));
+    }
     int w = 0, h = 0, channels = 0;
     if (!stbi_info_from_memory(data, size, &w, &h, &channels)) refuse(name, stbi_failure_reason());
-    check_size(name, w, h);  // before stb allocates the pixels
+    check_size(name, w, h);
     unsigned char* pixels = stbi_load_from_memory(data, size, &w, &h, &channels, 3);
     if (!pixels) refuse(name, stbi_failure_reason());
     Image image(w, h);

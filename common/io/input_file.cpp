@@ -1,5 +1,7 @@
 #include "io/input_file.hpp"
 
+#include "core/text.hpp"
+
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -10,7 +12,7 @@ namespace rt {
 
 std::string read_input_file(const std::string& path, const std::string& kind, const limits::Range& size_limit) {
     namespace fs = std::filesystem;
-    const std::string what = kind + " " + path + ": ";
+    const std::string what = one_line(kind + " " + path) + ": ";
     std::error_code ec;
     const fs::file_status status = fs::status(path, ec);
     if (status.type() == fs::file_type::not_found) throw std::runtime_error(what + "no such file");

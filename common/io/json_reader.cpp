@@ -1,5 +1,7 @@
 #include "io/json_reader.hpp"
 
+#include "core/text.hpp"
+
 #include <nlohmann/json.hpp>
 
 #include <cmath>
@@ -23,8 +25,8 @@ void JsonReader::fail(const std::string& pointer, const std::string& message) co
         if (at.empty()) break;
         at = at.substr(0, at.rfind('/'));
     }
-    throw SceneError(filename_ + ":" + std::to_string(p.line) + ":" + std::to_string(p.column) + ": " +
-                     (pointer.empty() ? std::string("/") : pointer) + ": " + message);
+    throw SceneError(one_line(filename_ + ":" + std::to_string(p.line) + ":" + std::to_string(p.column) + ": " +
+                              (pointer.empty() ? std::string("/") : pointer) + ": " + message));
 }
 
 Fields::Fields(const JsonReader& reader, const json& object, std::string pointer)

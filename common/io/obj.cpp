@@ -1,5 +1,6 @@
 #include "io/obj.hpp"
 
+#include "core/text.hpp"
 #include "io/input_file.hpp"
 
 #include <tiny_obj_loader.h>
@@ -13,7 +14,8 @@ namespace rt {
 namespace {
 
 [[noreturn]] void fail(const std::string& name, std::size_t line, const std::string& message) {
-    throw std::runtime_error("mesh " + name + (line ? ":" + std::to_string(line) : std::string()) + ": " + message);
+    throw std::runtime_error(
+        one_line("mesh " + name + (line ? ":" + std::to_string(line) : std::string()) + ": " + message));
 }
 
 // One pass over the text before tinyobjloader sees it, for what the loader cannot report:

@@ -1,5 +1,6 @@
 #include "io/scene_file.hpp"
 
+#include "core/text.hpp"
 #include "io/input_file.hpp"
 #include "io/json_locations.hpp"
 #include "io/scene_types.hpp"
@@ -78,17 +79,17 @@ json parse(const std::string& text, const std::string& filename) {
     // Before the parser: what it would accept but we could not hold (1e400 overflows a double)
     // or should not (nesting without end costs memory and time, and means nothing here).
     if (const auto problem = check_json_text(text))
-        throw SceneError(where(text, filename, problem->offset) + (problem->pointer.empty() ? "/" : problem->pointer) +
-                         ": " + problem->message);
+        throw SceneError(one_line(where(text, filename, problem->offset) +
+                                  (problem->pointer.empty() ? "/" : problem->pointer) + ": " + problem->message));
     try {
         return json::parse(text);
     } catch (const json::parse_error& e) {
         std::string what = e.what();
         const auto colon = what.rfind(": ");  // drop nlohmann's "[json.exception...] parse error at ..." prefix
         if (colon != std::string::npos) what = what.substr(colon + 2);
-        throw SceneError(where(text, filename, e.byte > 0 ? e.byte - 1 : 0) + "not valid JSON: " + what);
+        throw SceneError(one_line(where(text, filename, e.byte > 0 ? e.byte - 1 : 0) + "not valid JSON: " + what));
     } catch (const json::exception& e) {  // anything the check above missed: still one line, exit 2
-        throw SceneError(filename + ": not valid JSON: " + e.what());
+        throw SceneError(one_line(filename + ": not valid JSON: " + e.what()));
     }
 }
 
@@ -166,7 +167,7 @@ Scene load_scene_file(const std::string& path, SceneSummary* summary) {
     try {
         text = read_input_file(path, "scene file", limits::scene_file_bytes);
     } catch (const std::runtime_error& e) {
-        throw SceneError(e.what());
+        throw SceneError(one_line(e.what()));
     }
     const std::string dir = std::filesystem::path(path).parent_path().string();
     return load_scene_text(text, path, dir.empty() ? "." : dir, summary);

@@ -1,0 +1,407 @@
+#!/usr/bin/env python3
+"""The bad-input catalogue: malformed scene files, OBJ files, images and command lines.
+
+  bad_input_test.py ROOT BIN_DIR WORK_DIR
+
+Each case runs a program of BIN_DIR and states the exit code and the words its one-line
+message must contain. For every failing case the test also checks that stderr is exactly
+one line and that nothing was written: the output directory holds no image and no
+temporary afterwards. Then: a scene whose file name is not UTF-8 picks and prints its
+statistics, and SIGINT or SIGTERM at any moment of a render leaves either a whole image
+(the run had finished) or nothing. Prints one line per failure and a closing count; exit 1
+on any failure.
+"""
+import copy
+import json
+import math
+import os
+import pathlib
+import signal
+import subprocess
+import sys
+import time
+
+root, bin_dir, work = (pathlib.Path(a) for a in sys.argv[1:4])
+work = work.resolve()
+out = work / "out"
+inputs = work / "inputs"
+for d in (out, inputs):
+    d.mkdir(parents=True, exist_ok=True)
+passed = failed = 0
+
+
+def check(ok, what):
+    global passed, failed
+    if ok:
+        passed += 1
+    else:
+        failed += 1
+        print("FAIL:", what)
+
+
+def leftovers():
+    return sorted(p.name for p in out.iterdir())
+
+
+def run(name, argv, code, words, timeout=60):
+    """Runs argv; checks the exit code, one line of stderr naming `words`, nothing written."""
+    for p in out.iterdir():
+        p.unlink()
+    try:
+        r = subprocess.run([str(a) for a in argv], capture_output=True, timeout=timeout)
+    except subprocess.TimeoutExpired:
+        check(False, f"{name}: no answer within {timeout} s")
+        return
+    err = r.stderr.decode("utf-8", "replace").strip()
+    if r.returncode != code:
+        check(False, f"{name}: exit {r.returncode}, expected {code}: {err!r}")
+        return
+    if code != 0:
+        check(err != "" and "\n" not in err, f"{name}: expected one line on stderr, got {err!r}")
+        missing = [w for w in words if w not in err]
+        check(not missing, f"{name}: message {err!r} lacks {missing}")
+        check(not leftovers(), f"{name}: a failed run wrote {leftovers()}")
+    return r
+
+
+# --- scene files -----------------------------------------------------------------------
+
+BASE = {
+    "camera": {"eye": [0, 0, 5], "target": [0, 0, 0]},
+    "materials": {"m": {"diffuse": [0.5, 0.5, 0.5]}},
+    "lights": [{"type": "point", "position": [0, 5, 5]}],
+    "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}],
+}
+DELETE = object()
+
+
+def patched(patch):
+    doc = copy.deepcopy(BASE)
+    for pointer, value in patch.items():
+        *path, last = pointer.strip("/").split("/")
+        node = doc
+        for part in path:
+            node = node[int(part)] if isinstance(node, list) else node[part]
+        key = int(last) if isinstance(node, list) else last
+        if value is DELETE:
+            del node[key]
+        else:
+            node[key] = value
+    return json.dumps(doc, indent=1)
+
+
+def chapter(args):
+    return [bin_dir / "ch05"] + args + ["--width", "8", "--height", "6", "-o", out / "image.png"]
+
+
+def scene_text(name, text, words, code=2, files=None):
+    path = inputs / f"{name}.json"
+    path.write_bytes(text.encode() if isinstance(text, str) else text)
+    for file_name, content in (files or {}).items():
+        (inputs / file_name).write_text(content)
+    run(f"scene {name}", chapter(["--scene", path]), code, [path.name] + words)
+
+
+def scene(name, patch, *words):
+    scene_text(name, patched(patch), list(words))
+
+
+def surface(name, value, *words):
+    scene(name, {"/surfaces/0": value}, *words)
+
+
+S = "/surfaces/0"
+scene("radius_negative", {S + "/radius": -1}, S + "/radius", "length must be in 1e-6..1e8, not -1")
+scene("radius_zero", {S + "/radius": 0}, S + "/radius", "length must be in")
+scene("radius_huge", {S + "/radius": 1e39}, "length must be in", "not 1e39")
+scene("radius_tiny", {S + "/radius": 1e-7}, "length must be in")
+scene("radius_string", {S + "/radius": "1"}, S + "/radius", "must be a number")
+scene("radius_bool", {S + "/radius": True}, "must be a number")
+scene("radius_null", {S + "/radius": None}, "must be a number")
+scene("radius_missing", {S + "/radius": DELETE}, S, "missing key 'radius'")
+scene("center_far", {S + "/center": [1e9, 0, 0]}, S + "/center/0", "coordinate must be in -1e8..1e8")
+scene("center_very_far", {S + "/center": [-1e200, 0, 0]}, "coordinate must be in")
+scene("center_two", {S + "/center": [0, 0]}, S + "/center", "must be an array of 3 numbers")
+scene("center_four", {S + "/center": [0, 0, 0, 0]}, "must be an array of 3 numbers")
+scene("center_text", {S + "/center": "origin"}, "must be an array of 3 numbers")
+scene("center_string_item", {S + "/center": ["0", 0, 0]}, S + "/center/0", "must be a number")
+scene("center_missing", {S + "/center": DELETE}, "missing key 'center'")
+scene("type_missing", {S + "/type": DELETE}, "missing key 'type'")
+scene("type_unknown", {S + "/type": "cone"}, "unknown surface type \"cone\"")
+scene("type_number", {S + "/type": 5}, S + "/type", "must be a string")
+scene("surface_unknown_key", {S + "/colour": [1, 0, 0]}, "unknown key 'colour'")
+scene("surface_name_number", {S + "/name": 5}, S + "/name", "must be a string")
+scene("material_unknown_name", {S + "/material": "gold"}, "no material named \"gold\"")
+scene("material_not_string", {S + "/material": 3}, "must be a string")
+scene("materials_array", {"/materials": []}, "/materials", "must be an object")
+scene("material_not_object", {"/materials/m": 1}, "/materials/m", "must be an object")
+scene("diffuse_over_one", {"/materials/m/diffuse": [1.5, 0, 0]}, "/materials/m/diffuse/0", "reflectance must be in 0..1")
+scene("diffuse_negative", {"/materials/m/diffuse": [0, -0.1, 0]}, "/materials/m/diffuse/1", "reflectance")
+scene("diffuse_huge", {"/materials/m/diffuse": [0, 0, 1e39]}, "reflectance")
+scene("specular_two", {"/materials/m/specular": [1, 1]}, "must be an array of 3 numbers")
+scene("exponent_zero", {"/materials/m/exponent": 0}, "Phong exponent must be in")
+scene("exponent_huge", {"/materials/m/exponent": 1e7}, "Phong exponent")
+scene("exponent_negative", {"/materials/m/exponent": -5}, "Phong exponent")
+scene("material_unknown_key", {"/materials/m/shininess": 3}, "unknown key 'shininess'")
+L = "/lights/0"
+scene("light_colour_huge", {L + "/color": [1e39, 1, 1]}, L + "/color/0", "radiance must be in 0..1000000")
+scene("light_colour_negative", {L + "/color": [1, -1, 1]}, "radiance")
+scene("light_colour_past_limit", {L + "/color": [2e6, 1, 1]}, "radiance")
+scene("light_type_unknown", {L + "/type": "spot"}, "unknown light type \"spot\"")
+scene("light_position_missing", {L + "/position": DELETE}, "missing key 'position'")
+scene("light_position_far", {L + "/position": [0, 1e200, 0]}, L + "/position/1", "coordinate must be in")
+scene("directional_zero", {L: {"type": "directional", "direction": [0, 0, 0]}}, L + "/direction", "must not be zero")
+scene("directional_huge", {L: {"type": "directional", "direction": [0, -1e200, 0]}}, "coordinate must be in")
+scene("light_unknown_key", {L + "/falloff": 2}, "unknown key 'falloff'")
+scene("lights_object", {"/lights": {}}, "/lights", "must be an array")
+scene("light_number", {"/lights": [5]}, L, "must be an object")
+scene("background_huge", {"/background": [1e39, 0, 0]}, "/background/0", "radiance")
+scene("background_two", {"/background": [1, 2]}, "/background", "must be an array of 3 numbers")
+scene("ambient_negative", {"/ambient": [-1, 0, 0]}, "/ambient/0", "radiance")
+scene("ambient_text", {"/ambient": "grey"}, "/ambient", "must be an array of 3 numbers")
+C = "/camera"
+scene("camera_missing", {C: DELETE}, "missing key 'camera'")
+scene("camera_not_object", {C: [0, 0, 5]}, C, "must be an object")
+scene("eye_missing", {C + "/eye": DELETE}, "missing key 'eye'")
+scene("eye_on_target", {C + "/eye": [0, 0, 0]}, "eye and target are the same point")
+scene("up_along_view", {C + "/up": [0, 0, 1]}, "up is parallel to the view direction")
+scene("eye_very_far", {C + "/eye": [1e200, 0, 0]}, C + "/eye/0", "coordinate must be in")
+scene("fov_zero", {C + "/fov": 0}, C + "/fov", "field of view must be in 0.001..179.9 degrees")
+scene("fov_180", {C + "/fov": 180}, "field of view")
+scene("fov_negative", {C + "/fov": -10}, "field of view")
+scene("projection_unknown", {C + "/projection": "fisheye"}, "must be \"perspective\" or \"orthographic\"")
+scene("window_height_zero", {C + "/projection": "orthographic", C + "/window_height": 0}, "length must be in")
+scene("focal_distance_negative", {C + "/focal_distance": -1}, C + "/focal_distance", "length")
+scene("camera_unknown_key", {C + "/aperture": 1}, "unknown key 'aperture'")
+scene("shading_unknown", {"/shading": "toon"}, "unknown shading \"toon\"")
+scene("shading_number", {"/shading": 3}, "/shading", "must be a string")
+scene("top_unknown_key", {"/sky": 1}, "/sky", "unknown key 'sky'")
+scene("surfaces_missing", {"/surfaces": DELETE}, "missing key 'surfaces'")
+scene("surfaces_object", {"/surfaces": {}}, "/surfaces", "must be an array")
+scene("surface_number", {"/surfaces": [5]}, S, "must be an object")
+scene("description_number", {"/description": 5}, "/description", "must be a string")
+surface("triangle_two_vertices", {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0]]},
+        "must be an array of 3 points")
+surface("triangle_collinear", {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [2, 0, 0]]}, "degenerate")
+surface("triangle_far_vertex", {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1e9, 0]]},
+        S + "/vertices/2/1", "coordinate")
+surface("triangle_vertex_not_point", {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], 7]},
+        S + "/vertices/2", "must be an array of 3 numbers")
+surface("polygon_two_vertices", {"type": "polygon", "vertices": [[0, 0, 0], [1, 0, 0]]},
+        "polygon vertices must be in 3..100000, not 2")
+surface("polygon_collinear", {"type": "polygon", "vertices": [[0, 0, 0], [1, 0, 0], [2, 0, 0], [3, 0, 0]]},
+        "no area")
+surface("polygon_not_planar", {"type": "polygon", "vertices": [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 1]]},
+        "off the plane")
+surface("polygon_too_many", {"type": "polygon", "vertices": [[i % 7, i % 5, 0] for i in range(100001)]},
+        "polygon vertices must be in 3..100000, not 100001")
+surface("polygon_repeated_vertex", {"type": "polygon", "vertices": [[0, 0, 0], [0, 0, 0], [1, 0, 0], [0, 1, 0]]},
+        "vertices")
+surface("icosphere_subdivisions_8", {"type": "icosphere", "center": [0, 0, 0], "radius": 1, "subdivisions": 8},
+        "icosphere subdivisions must be in 0..7, not 8")
+surface("icosphere_subdivisions_fraction",
+        {"type": "icosphere", "center": [0, 0, 0], "radius": 1, "subdivisions": 2.5}, "must be a whole number")
+surface("cube_subdivisions_0", {"type": "cube", "center": [0, 0, 0], "size": 1, "subdivisions": 0},
+        "cube subdivisions must be in 1..256, not 0")
+surface("cube_subdivisions_257", {"type": "cube", "center": [0, 0, 0], "size": 1, "subdivisions": 257},
+        "cube subdivisions")
+surface("cube_size_negative", {"type": "cube", "center": [0, 0, 0], "size": -2}, S + "/size", "length")
+surface("terrain_cells_0", {"type": "terrain", "center": [0, 0, 0], "size": 4, "height": 1, "cells": 0},
+        "terrain cells must be in 1..2048, not 0")
+surface("terrain_cells_5000", {"type": "terrain", "center": [0, 0, 0], "size": 4, "height": 1, "cells": 5000},
+        "terrain cells")
+surface("terrain_height_huge", {"type": "terrain", "center": [0, 0, 0], "size": 4, "height": 1e9},
+        S + "/height", "coordinate")
+surface("soup_count_0", {"type": "soup", "center": [0, 0, 0], "size": 1, "scale": 0.1, "count": 0},
+        "soup triangles must be in 1..1000000, not 0")
+surface("soup_count_past_limit", {"type": "soup", "center": [0, 0, 0], "size": 1, "scale": 0.1, "count": 1000001},
+        "soup triangles")
+surface("soup_seed_negative", {"type": "soup", "center": [0, 0, 0], "size": 1, "scale": 0.1, "count": 5, "seed": -1},
+        "soup seed must be in 0..2147483647, not -1")
+surface("soup_scale_zero", {"type": "soup", "center": [0, 0, 0], "size": 1, "scale": 0, "count": 5}, "length")
+
+good = patched({})
+scene_text("empty", "", ["not valid JSON"])
+scene_text("trailing_comma", good[:-2] + ",\n}", ["not valid JSON"])
+scene_text("truncated", good[: len(good) // 2], ["not valid JSON"])
+scene_text("comment", "// a scene\n" + good, ["1:1", "not valid JSON"])
+scene_text("top_level_array", "[" + good + "]", ["/: must be an object"])
+scene_text("nul_byte", good.replace('"m"', '"\0"', 1), ["not valid JSON"])
+scene_text("invalid_utf8", good.encode().replace(b'"m"', b'"\xe9"', 1), ["not valid JSON"])
+scene_text("nested_100000", '{"description": ' + "[" * 100000 + "]" * 100000 + "}",
+           ["/description/0/0", "JSON nesting depth must be in 1..32"])
+scene_text("nested_33", '{"description": ' + "[" * 32 + "]" * 32 + "}", ["JSON nesting depth must be in 1..32, not 33"])
+scene_text("radius_1e400", good.replace('"radius": 1', '"radius": 1e400'),
+           [S + "/radius", "number 1e400 is too large to hold"])
+scene_text("center_minus_1e400", good.replace('"center": [\n    0', '"center": [\n    -1e400'),
+           [S + "/center/0", "too large to hold"])
+scene_text("fov_1e400", good.replace('"target"', '"fov": 1e400, "target"'), [C + "/fov", "too large to hold"])
+scene_text("file_too_large", good + " " * (17 << 20), ["scene file size must be in 0..16777216 bytes, not"])
+
+# --- meshes (OBJ files, through a scene) -----------------------------------------------------
+
+
+def mesh(name, obj, words, patch=None, code=2):
+    doc = copy.deepcopy(BASE)
+    doc["surfaces"] = [{"type": "mesh", "file": f"{name}.obj", **(patch or {})}]
+    scene_text(f"mesh_{name}", json.dumps(doc), words, code, files={f"{name}.obj": obj} if obj is not None else None)
+
+
+TRI = "v 0 0 0\nv 1 0 0\nv 0 1 0\n"
+mesh("missing", None, ["/surfaces/0/file", "missing.obj: no such file"])
+(inputs / "folder.obj").mkdir(exist_ok=True)
+mesh("folder", None, ["folder.obj: is a directory"])
+doc = copy.deepcopy(BASE)
+doc["surfaces"] = [{"type": "mesh", "file": "/dev/zero"}]
+scene_text("mesh_device", json.dumps(doc), ["/dev/zero: is not a regular file"])
+mesh("index_huge", TRI + "f 1 2 99999999999\n", ["index_huge.obj:4", "vertex index 99999999999, but the file has 3"])
+mesh("index_past_1e12", TRI + "f 1 2 99999999999999999999\n", ["vertex index past 10^12"])
+mesh("index_zero", TRI + "f 0 1 2\n", ["index_zero.obj:4", "vertex index 0"])
+mesh("index_before_first", TRI + "f -1 -2 -4\n", ["vertex index -4 reaches before the first vertex"])
+mesh("face_two_corners", TRI + "f 1 2\n", ["face_two_corners.obj:4", "a face needs at least 3 corners"])
+mesh("face_garbage", TRI + "f a b c\n", ["face corner 'a' has no vertex index"])
+mesh("no_faces", TRI, ["no triangles in the file"])
+mesh("empty", "", ["no triangles in the file"])
+mesh("vertex_huge", "v 1e400 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", ["vertex 1", "coordinate must be in"])
+mesh("all_degenerate", TRI + "v 2 0 0\nf 1 2 4\n", ["every triangle is degenerate"])
+mesh("scaled_past_limit", TRI + "f 1 2 3\n", ["vertex 2", "coordinate must be in"],
+     {"scale": 1e8, "translate": [1e8, 0, 0]})
+mesh("translate_far", TRI + "f 1 2 3\n", ["/surfaces/0/translate/0", "coordinate"], {"translate": [1e9, 0, 0]})
+mesh("scale_zero", TRI + "f 1 2 3\n", ["/surfaces/0/scale", "length"], {"scale": 0})
+
+# A face of 20,000 corners is a valid polygon: it loads (fanned in linear time) and renders.
+big = 20000
+ring = "".join(f"v {math.cos(2 * math.pi * k / big)} {math.sin(2 * math.pi * k / big)} 0\n" for k in range(big))
+mesh("face_20000_corners", ring + "f " + " ".join(str(k + 1) for k in range(big)) + "\n", [], code=0)
+
+# --- images (rtlab-diff) --------------------------------------------------------------------
+
+golden = root / "tests/golden/ch01/gradient.png"
+if not golden.exists():
+    golden = sorted((root / "tests/golden").glob("*/*.png"))[0]
+png = golden.read_bytes()
+
+
+def image(name, data, words, other=golden):
+    path = inputs / name
+    if isinstance(data, bytes):
+        path.write_bytes(data)
+    run(f"image {name}", [bin_dir / "rtlab-diff", other, path, "--heatmap", out / "heat.png"], 2, [name] + words)
+
+
+def pfm(w, h, floats, scale="-1.0"):
+    import struct
+    return f"PF\n{w} {h}\n{scale}\n".encode() + struct.pack(f"<{len(floats)}f", *floats)
+
+
+image("missing.png", None, ["no such file"])
+(inputs / "folder.png").mkdir(exist_ok=True)
+image("folder.png", None, ["is a directory"])
+image("text.png", b"this is not a PNG", ["not a PNG file"])
+image("truncated.png", png[:100], ["cannot read image"])
+image("empty.png", b"", ["not a PNG file"])
+# A valid PNG signature and header claiming 100000 x 100000 pixels: refused before decoding.
+import struct
+import zlib
+ihdr = struct.pack(">IIBBBBB", 100000, 100000, 8, 2, 0, 0, 0)
+chunk = struct.pack(">I", len(ihdr)) + b"IHDR" + ihdr + struct.pack(">I", zlib.crc32(b"IHDR" + ihdr))
+image("huge.png", b"\x89PNG\r\n\x1a\n" + chunk, ["image width and height must be in 1..16384 pixels, not 100000"])
+ihdr = struct.pack(">IIBBBBB", 8192, 8192, 8, 2, 0, 0, 0)
+chunk = struct.pack(">I", len(ihdr)) + b"IHDR" + ihdr + struct.pack(">I", zlib.crc32(b"IHDR" + ihdr))
+image("many_pixels.png", b"\x89PNG\r\n\x1a\n" + chunk, ["image size must be in 1..33554432 pixels, not 67108864"])
+image("short.pfm", pfm(2, 2, [0.5] * 3), ["holds 12 bytes of pixels, not 48 for 2x2"])
+image("long.pfm", pfm(1, 1, [0.5] * 6), ["holds 24 bytes of pixels, not 12 for 1x1"])
+image("nan.pfm", pfm(1, 1, [0.5, float("nan"), 0.5]), ["pixel 0,0 is not finite"])
+image("inf.pfm", pfm(1, 1, [float("inf"), 0, 0]), ["pixel 0,0 is not finite"])
+image("big_endian.pfm", pfm(1, 1, [0.5] * 3, scale="1.0"), ["not a little-endian colour PFM"])
+image("grey.pfm", b"Pf\n1 1\n-1.0\n" + b"\0" * 4, ["not a PNG file"])
+image("zero_width.pfm", pfm(0, 1, []), ["image width and height must be in 1..16384 pixels, not 0"])
+image("huge.pfm", b"PF\n20000 20000\n-1.0\n", ["image width and height must be in 1..16384 pixels, not 20000"])
+image("width_text.pfm", b"PF\nwide 1\n-1.0\n\0\0\0\0", ["not a little-endian colour PFM"])
+small = inputs / "small.pfm"
+small.write_bytes(pfm(1, 1, [0.5] * 3))
+image("size_differs.pfm", pfm(2, 1, [0.5] * 6), ["sizes differ"], other=small)
+run("diff heatmap extension", [bin_dir / "rtlab-diff", golden, golden, "--heatmap", out / "heat.jpg"], 2,
+    ["--heatmap", "must end in .png"])
+run("diff threshold nan", [bin_dir / "rtlab-diff", golden, golden, "--threshold", "nan"], 2, ["--threshold"])
+run("diff max-rmse nan", [bin_dir / "rtlab-diff", golden, golden, "--max-rmse", "nan"], 2, ["--max-rmse"])
+run("diff radius 9", [bin_dir / "rtlab-diff", golden, golden, "--radius", "9"], 2, ["--radius"])
+run("diff one image", [bin_dir / "rtlab-diff", golden], 2, ["B"])
+
+# --- command lines --------------------------------------------------------------------------------
+
+
+def cli(name, args, words, code=2):
+    run(f"cli {name}", [bin_dir / "ch02"] + args, code, words)
+
+
+o = ["-o", out / "image.png"]
+cli("width_text", ["--width", "abc"] + o, ["--width", "must be a whole number, not 'abc'"])
+cli("width_zero", ["--width", "0"] + o, ["--width"])
+cli("width_past_limit", ["--width", "16385"] + o, ["--width"])
+cli("width_float", ["--width", "12.5"] + o, ["--width", "whole number"])
+cli("height_negative", ["--height", "-1"] + o, ["--height"])
+cli("spp_zero", ["--spp", "0"] + o, ["--spp"])
+cli("spp_past_limit", ["--spp", "65537"] + o, ["--spp"])
+cli("too_many_pixels", ["--width", "16384", "--height", "16384"] + o,
+    ["image size must be in 1..33554432 pixels, not 268435456"])
+cli("too_many_samples", ["--width", "8192", "--height", "4096", "--spp", "65536"] + o,
+    ["samples per image must be in 1..4294967296 width x height x spp, not 2199023255552"])
+cli("threads_past_limit", ["--threads", "2000"] + o, ["--threads"])
+cli("threads_text", ["--threads", "many"] + o, ["--threads"])
+cli("seed_text", ["--seed", "abc"] + o, ["--seed"])
+cli("seed_negative", ["--seed", "-1"] + o, ["--seed"])
+cli("unknown_option", ["--frobnicate"] + o, ["frobnicate"])
+cli("extra_argument", ["extra"] + o, ["extra"])
+cli("unknown_scene", ["--scene", "nope"] + o, ["unknown scene 'nope'"])
+cli("scene_file_missing", ["--scene", inputs / "none.json"] + o, ["none.json: no such file"])
+(inputs / "folder.json").mkdir(exist_ok=True)
+cli("scene_file_folder", ["--scene", inputs / "folder.json"] + o, ["folder.json: is a directory"])
+cli("output_empty", ["-o", ""], ["--output: must not be empty"])
+cli("output_jpg", ["-o", out / "x.jpg"], ["must end in .png or .pfm"])
+cli("output_bare_extension", ["-o", out / ".png"], ["must end in .png or .pfm"])
+cli("pick_one_number", ["--pick", "7"] + o, ["--pick"])
+cli("pick_outside", ["--width", "20", "--height", "20", "--pick", "20,3"] + o, ["--pick", "outside the 20x20 image"])
+cli("pick_negative", ["--pick", "-1,0"] + o, ["--pick"])
+cli("pick_text", ["--pick", "a,b"] + o, ["--pick"])
+cli("output_unwritable", ["--width", "8", "--height", "8", "-o", "/proc/rtlab/x.png"], ["cannot"], code=1)
+
+# --- a scene file whose name is not UTF-8 --------------------------------------------------------
+
+latin1 = os.fsencode(str(inputs)) + b"/caf\xe9.json"
+with open(latin1, "wb") as f:
+    f.write(good.encode())
+for extra in (["--pick", "4,3"], ["--stats"]):
+    r = subprocess.run([str(bin_dir / "ch05"), b"--scene", latin1, "--width", "8", "--height", "6",
+                        "-o", str(out / "cafe.png")] + extra, capture_output=True)
+    ok = r.returncode == 0
+    try:
+        json.loads(r.stdout)
+    except ValueError:
+        ok = False
+    check(ok, f"non-UTF-8 scene name with {extra[0]}: exit {r.returncode}, stdout {r.stdout[:200]!r}, "
+              f"stderr {r.stderr[:200]!r}")
+
+# --- interrupted renders -------------------------------------------------------------------------
+# SIGINT or SIGTERM at any moment: the run ends by the signal and leaves nothing, or it had
+# finished and left a whole image. Never a half file, never a temporary.
+slow = [str(bin_dir / "ch05"), "--scene", "meshes", "--width", "320", "--height", "240", "--spp", "2",
+        "-o", str(out / "interrupted.pfm")]
+for sig in (signal.SIGINT, signal.SIGTERM):
+    for delay in (0.05, 0.2, 0.4, 0.8, 1.6):
+        for p in out.iterdir():
+            p.unlink()
+        proc = subprocess.Popen(slow, stdout=subprocess.DEVNULL, stderr=subprocess.DEVNULL)
+        time.sleep(delay)
+        proc.send_signal(sig)
+        code = proc.wait(timeout=60)
+        files = leftovers()
+        if code == 0:
+            size = len(b"PF\n320 240\n-1.0\n") + 320 * 240 * 12
+            whole = files == ["interrupted.pfm"] and (out / "interrupted.pfm").stat().st_size == size
+            check(whole, f"{sig.name} after {delay} s: finished, but left {files}")
+        else:
+            check(code == -sig and not files, f"{sig.name} after {delay} s: exit {code}, left {files}")
+
+print(f"bad_input_test: {passed} passed, {failed} failed")
+sys.exit(1 if failed else 0)
