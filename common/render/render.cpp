@@ -12,7 +12,10 @@
 #include <cmath>
 #include <cstdio>
 #include <mutex>
+#include <exception>
 #include <stdexcept>
+#include <thread>
+#include <vector>
 
 namespace rt {
 
@@ -126,6 +129,27 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
     };
 
     const int threads = o.threads > 0 ? o.threads : tbb::this_task_arena::max_concurrency();
+#if defined(RTLAB_TSAN)
+    // Debian's libtbb is not built with ThreadSanitizer, so TBB's own synchronisation is
+    // invisible to it and it reports TBB's internals. Under RTLAB_TSAN the same tiles run on
+    // plain threads that take them from a counter: what is checked is our sharing.
+    std::atomic<int> next{0};
+    std::exception_ptr first_error;
+    std::mutex error_mutex;
+    std::vector<std::thread> workers;
+    for (int w = 0; w < threads; ++w)
+        workers.emplace_back([&] {
+            try {
+                for (int t; (t = next++) < tiles;) render_tile(t);
+            } catch (...) {
+                std::lock_guard lock(error_mutex);
+                if (!first_error) first_error = std::current_exception();
+                next = tiles;
+            }
+        });
+    for (std::thread& w : workers) w.join();
+    if (first_error) std::rethrow_exception(first_error);
+#else
     tbb::task_arena arena(threads);
     arena.execute([&] {
         tbb::parallel_for(
@@ -135,6 +159,7 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
             },
             tbb::simple_partitioner());
     });
+#endif
     progress.finish();
     result.seconds = progress.seconds();
     result.threads = threads;
