@@ -220,6 +220,29 @@ surface("soup_seed_negative", {"type": "soup", "center": [0, 0, 0], "size": 1, "
         "soup seed must be in 0..2147483647, not -1")
 surface("soup_scale_zero", {"type": "soup", "center": [0, 0, 0], "size": 1, "scale": 0, "count": 5}, "length")
 
+
+def renders(name, patch):
+    """Values at the edges of their ranges: accepted, rendered, and every sample finite."""
+    path = inputs / f"{name}.json"
+    path.write_text(patched(patch))
+    r = run(f"edge {name}", chapter(["--scene", path, "--stats"]), 0, [])
+    if r is not None:
+        stats = json.loads(r.stdout)
+        check(stats["nonfinite_samples"] == 0, f"edge {name}: {stats['nonfinite_samples']} samples not finite")
+
+
+renders("directional_tiny", {L: {"type": "directional", "direction": [0, -1e-30, 0]}})
+renders("directional_largest", {L: {"type": "directional", "direction": [1e8, -1e8, 1e8]}})
+renders("up_tiny", {C + "/up": [0, 1e-30, 0]})
+renders("eye_close_to_target", {C + "/eye": [0, 0, 1e-30], C + "/target": [0, 0, 0]})
+renders("everything_far", {C + "/eye": [1e8, 1e8, 1e8], C + "/target": [-1e8, -1e8, -1e8], S + "/center": [0, 0, 0],
+                           S + "/radius": 1e8, L + "/position": [-1e8, 1e8, 1e8]})
+renders("radiance_largest", {L + "/color": [1e6, 1e6, 1e6], "/background": [1e6, 0, 0], "/ambient": [1e6, 1e6, 1e6],
+                             "/materials/m/diffuse": [1, 1, 1], "/materials/m/specular": [1, 1, 1]})
+renders("light_inside_sphere_surface", {L + "/position": [0, 0, 1]})
+renders("radius_smallest", {S + "/radius": 1e-6})
+renders("exponent_extremes", {"/materials/m/exponent": 1e6, "/materials/m/specular": [1, 1, 1]})
+
 good = patched({})
 scene_text("empty", "", ["not valid JSON"])
 scene_text("trailing_comma", good[:-2] + ",\n}", ["not valid JSON"])
@@ -269,10 +292,11 @@ mesh("scaled_past_limit", TRI + "f 1 2 3\n", ["vertex 2", "coordinate must be in
 mesh("translate_far", TRI + "f 1 2 3\n", ["/surfaces/0/translate/0", "coordinate"], {"translate": [1e9, 0, 0]})
 mesh("scale_zero", TRI + "f 1 2 3\n", ["/surfaces/0/scale", "length"], {"scale": 0})
 
-# A face of 20,000 corners is a valid polygon: it loads (fanned in linear time) and renders.
-big = 20000
-ring = "".join(f"v {math.cos(2 * math.pi * k / big)} {math.sin(2 * math.pi * k / big)} 0\n" for k in range(big))
-mesh("face_20000_corners", ring + "f " + " ".join(str(k + 1) for k in range(big)) + "\n", [], code=0)
+# tinyobjloader counts a face's corners in a byte: 255 corners load (fanned, in linear time),
+# 20,000 are refused at once rather than wrapped round.
+for big, code, words in ((255, 0, []), (20000, 2, ["OBJ face corners must be in 3..255, not 20000"])):
+    ring = "".join(f"v {math.cos(2 * math.pi * k / big)} {math.sin(2 * math.pi * k / big)} 0\n" for k in range(big))
+    mesh(f"face_{big}_corners", ring + "f " + " ".join(str(k + 1) for k in range(big)) + "\n", words, code=code)
 
 # --- images (rtlab-diff) --------------------------------------------------------------------
 

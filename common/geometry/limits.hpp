@@ -41,6 +41,7 @@ inline constexpr Range soup_seed{"soup seed", 0, 2147483647, "", "/$defs/surface
 inline constexpr Range json_depth{"JSON nesting depth", 1, 32, "", ""};
 inline constexpr Range scene_file_bytes{"scene file size", 0, 16 << 20, "bytes", ""};
 inline constexpr Range obj_file_bytes{"OBJ file size", 0, 1 << 30, "bytes", ""};
+inline constexpr Range obj_face_corners{"OBJ face corners", 3, 255, "", ""};  // tinyobjloader keeps a byte
 inline constexpr Range mesh_vertices{"mesh vertices", 3, 1 << 25, "", ""};
 inline constexpr Range mesh_triangles{"mesh triangles", 1, 1 << 25, "", ""};
 inline constexpr Range image_file_bytes{"image file size", 0, 1 << 29, "bytes", ""};
@@ -55,7 +56,7 @@ inline constexpr Range all[] = {coordinate,       length,           reflectance,
                                 exponent,         field_of_view,    triangle_vertices, polygon_vertices,
                                 icosphere_subdivisions, cube_subdivisions, terrain_cells, soup_count,
                                 soup_seed,        json_depth,       scene_file_bytes,  obj_file_bytes,
-                                mesh_vertices,    mesh_triangles,   image_file_bytes,  image_side,
+                                obj_face_corners, mesh_vertices,    mesh_triangles,   image_file_bytes,  image_side,
                                 image_pixels,     samples_per_pixel, image_samples,    threads};
 
 // True if `value` is in the range (a NaN never is).

@@ -63,6 +63,9 @@ void check_counts_and_indices(const std::string& text, const std::string& name) 
             if (!negative && index > highest) highest = index, highest_line = number;
         }
         if (count < 3) fail(name, number, "a face needs at least 3 corners, this one has " + std::to_string(count));
+        // tinyobjloader counts a face's corners in a byte: past 255 it would silently wrap.
+        if (!limits::contains(limits::obj_face_corners, count))
+            fail(name, number, limits::refuse(limits::obj_face_corners, count));
         triangles += count - 2;
         if (triangles > limits::mesh_triangles.max) fail(name, number, limits::refuse(limits::mesh_triangles, triangles));
     }

@@ -15,9 +15,9 @@ Ray View::ray(const CameraSample& sample) const {
 
 void Camera::validate() const {
     const Vec3 view_direction = target - eye;
-    if (!(glm::dot(view_direction, view_direction) > 0))
-        throw std::invalid_argument("camera: eye and target are the same point");
-    if (!(glm::length(glm::cross(glm::normalize(view_direction), glm::normalize(up))) > Real(1e-6)))
+    if (view_direction == Vec3(0)) throw std::invalid_argument("camera: eye and target are the same point");
+    if (up == Vec3(0)) throw std::invalid_argument("camera: up must not be zero");
+    if (!(glm::length(glm::cross(unit_vector(view_direction), unit_vector(up))) > Real(1e-6)))
         throw std::invalid_argument("camera: up is parallel to the view direction");
     if (projection == Projection::perspective && !(vertical_fov_degrees > 0 && vertical_fov_degrees < 180))
         throw std::invalid_argument("camera: vertical field of view must be in (0, 180) degrees");
@@ -39,7 +39,8 @@ View Camera::view(int nx, int ny) const {
     const Real half_width = half_height * aspect;
     return View{projection,
                 eye,
-                camera_basis(view_direction, up),
+                // Unit vectors first: the student's basis then never squares a huge or tiny one.
+                camera_basis(unit_vector(view_direction), unit_vector(up)),
                 Window{-half_width, half_width, -half_height, half_height},
                 focal_distance,
                 nx,

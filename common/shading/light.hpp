@@ -20,9 +20,10 @@ struct Light {
     Color color{1};            // c_l
 
     LightSample sample(const Vec3& p) const {
-        if (type == Type::directional) return {-glm::normalize(direction), kInfinity, color};
+        if (type == Type::directional) return {-unit_vector(direction), kInfinity, color};
         const Vec3 to = position - p;
         const Real distance = glm::length(to);
+        if (!(distance > 0)) return {Vec3(0, 0, 1), 0, Color(0)};  // a point on the light: no direction to it
         // Bit for bit what glm::normalize computes: to times 1 / sqrt(to . to).
         return {to * (Real(1) / distance), distance, color};
     }
