@@ -150,7 +150,8 @@ TEST_CASE("bad image files give one clear error") {
                          std::runtime_error);
     CHECK_THROWS_AS(read_png((dir / "missing.png").string()), std::runtime_error);
     std::ofstream(dir / "short.pfm") << "PF\n4 4\n-1.0\nabc";
-    CHECK_THROWS_WITH_AS(read_pfm((dir / "short.pfm").string()), doctest::Contains("holds 3 bytes of pixels, not 192 for 4x4"), std::runtime_error);
+    CHECK_THROWS_WITH_AS(read_pfm((dir / "short.pfm").string()),
+                         doctest::Contains("holds 3 bytes of pixels, not 192 for 4x4"), std::runtime_error);
     std::ofstream(dir / "huge.pfm") << "PF\n999999999 4\n-1.0\n";
     CHECK_THROWS_AS(read_pfm((dir / "huge.pfm").string()), std::runtime_error);
     fs::remove_all(dir);

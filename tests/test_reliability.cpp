@@ -93,7 +93,8 @@ TEST_CASE("one_line: control characters become escapes, UTF-8 stays") {
 
 TEST_CASE("unit_vector: any finite non-zero vector, huge or tiny, in float as in double") {
     const Real big = std::numeric_limits<Real>::max() / 4, tiny = std::numeric_limits<Real>::denorm_min() * 8;
-    for (const Vec3& v : {Vec3(0, -big, 0), Vec3(big, big, big), Vec3(0, tiny, 0), Vec3(tiny, -tiny, 0), Vec3(3, 4, 0)}) {
+    for (const Vec3& v :
+         {Vec3(0, -big, 0), Vec3(big, big, big), Vec3(0, tiny, 0), Vec3(tiny, -tiny, 0), Vec3(3, 4, 0)}) {
         CAPTURE(v);
         const Vec3 u = unit_vector(v);
         CHECK(std::abs(glm::length(u) - 1) < 4 * std::numeric_limits<Real>::epsilon());
@@ -182,7 +183,8 @@ TEST_CASE("images: sizes checked before decoding, PFM pixels finite and exactly 
     CHECK_THROWS_WITH_AS(decode_pfm("PF\n16385 1\n-1.0\n", "wide.pfm"),
                          "cannot read image wide.pfm: image width and height must be in 1..16384 pixels, not 16385",
                          std::runtime_error);
-    CHECK_THROWS_WITH_AS(decode_image("GIF89a", "x.gif"), "cannot read image x.gif: not a PNG file", std::runtime_error);
+    CHECK_THROWS_WITH_AS(decode_image("GIF89a", "x.gif"), "cannot read image x.gif: not a PNG file",
+                         std::runtime_error);
 }
 
 TEST_CASE("render budget: image size and samples refused before any work") {

@@ -52,7 +52,8 @@ TEST_CASE("scene file errors name the file, line, column and key") {
           "background, ambient, materials, lights, surfaces)");
     CHECK(load_error(
               "{\"camera\": {\"eye\": [0, 0, 5], \"target\": [0, 0, 0]},\n \"surfaces\": [\n  {\"type\": \"sphere\", "
-              "\"center\": [0, 0, 0], \"radius\": -1}]}") == "test.json:3:43: /surfaces/0/radius: length must be in 1e-6..1e8, not -1");
+              "\"center\": [0, 0, 0], \"radius\": -1}]}") ==
+          "test.json:3:43: /surfaces/0/radius: length must be in 1e-6..1e8, not -1");
     CHECK(load_error(
               "{\"camera\": {\"eye\": [0, 0, 5], \"target\": [0, 0, 0]},\n \"surfaces\": [\n  {\"type\": \"sphere\", "
               "\"center\": [0, 0], \"radius\": 1}]}") ==

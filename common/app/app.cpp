@@ -2,8 +2,8 @@
 
 #include "core/text.hpp"
 #include "core/version.hpp"
-#include "io/image_file.hpp"
 #include "geometry/limits.hpp"
+#include "io/image_file.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>

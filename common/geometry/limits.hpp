@@ -14,10 +14,10 @@
 namespace rt::limits {
 
 struct Range {
-    const char* name;   // as the messages say it
-    double min, max;    // both allowed
-    const char* what;   // "" for a count or a plain number; else its unit ("bytes", "degrees")
-    const char* schema; // where the JSON Schema states it (JSON pointer); "" if not a scene value
+    const char* name;    // as the messages say it
+    double min, max;     // both allowed
+    const char* what;    // "" for a count or a plain number; else its unit ("bytes", "degrees")
+    const char* schema;  // where the JSON Schema states it (JSON pointer); "" if not a scene value
 };
 
 // @book limits
@@ -30,10 +30,12 @@ inline constexpr Range exponent{"Phong exponent", 1e-3, 1e6, "", "/$defs/materia
 inline constexpr Range field_of_view{"field of view", 1e-3, 179.9, "degrees", "/$defs/camera/properties/fov"};
 // Counts in a scene file.
 inline constexpr Range triangle_vertices{"triangle vertices", 3, 3, "", "/$defs/surface/oneOf/1/properties/vertices"};
-inline constexpr Range polygon_vertices{"polygon vertices", 3, 100000, "", "/$defs/surface/oneOf/2/properties/vertices"};
+inline constexpr Range polygon_vertices{"polygon vertices", 3, 100000, "",
+                                        "/$defs/surface/oneOf/2/properties/vertices"};
 inline constexpr Range icosphere_subdivisions{"icosphere subdivisions", 0, 7, "",
                                               "/$defs/surface/oneOf/4/properties/subdivisions"};
-inline constexpr Range cube_subdivisions{"cube subdivisions", 1, 256, "", "/$defs/surface/oneOf/5/properties/subdivisions"};
+inline constexpr Range cube_subdivisions{"cube subdivisions", 1, 256, "",
+                                         "/$defs/surface/oneOf/5/properties/subdivisions"};
 inline constexpr Range terrain_cells{"terrain cells", 1, 2048, "", "/$defs/surface/oneOf/6/properties/cells"};
 inline constexpr Range soup_count{"soup triangles", 1, 1000000, "", "/$defs/surface/oneOf/7/properties/count"};
 inline constexpr Range soup_seed{"soup seed", 0, 2147483647, "", "/$defs/surface/oneOf/7/properties/seed"};
@@ -52,12 +54,31 @@ inline constexpr Range image_samples{"samples per image", 1, 4294967296.0, "widt
 inline constexpr Range threads{"threads", 0, 1024, "", ""};
 // @book-end
 
-inline constexpr Range all[] = {coordinate,       length,           reflectance,       radiance,
-                                exponent,         field_of_view,    triangle_vertices, polygon_vertices,
-                                icosphere_subdivisions, cube_subdivisions, terrain_cells, soup_count,
-                                soup_seed,        json_depth,       scene_file_bytes,  obj_file_bytes,
-                                obj_face_corners, mesh_vertices,    mesh_triangles,   image_file_bytes,  image_side,
-                                image_pixels,     samples_per_pixel, image_samples,    threads};
+inline constexpr Range all[] = {coordinate,
+                                length,
+                                reflectance,
+                                radiance,
+                                exponent,
+                                field_of_view,
+                                triangle_vertices,
+                                polygon_vertices,
+                                icosphere_subdivisions,
+                                cube_subdivisions,
+                                terrain_cells,
+                                soup_count,
+                                soup_seed,
+                                json_depth,
+                                scene_file_bytes,
+                                obj_file_bytes,
+                                obj_face_corners,
+                                mesh_vertices,
+                                mesh_triangles,
+                                image_file_bytes,
+                                image_side,
+                                image_pixels,
+                                samples_per_pixel,
+                                image_samples,
+                                threads};
 
 // True if `value` is in the range (a NaN never is).
 inline constexpr bool contains(const Range& r, double value) {

@@ -22,7 +22,8 @@ std::string read_input_file(const std::string& path, const std::string& kind, co
     if (status.type() != fs::file_type::regular) throw std::runtime_error(what + "is not a regular file");
     const auto size = fs::file_size(path, ec);
     if (ec) throw std::runtime_error(what + ec.message());
-    if (!limits::contains(size_limit, double(size))) throw std::runtime_error(what + limits::refuse(size_limit, double(size)));
+    if (!limits::contains(size_limit, double(size)))
+        throw std::runtime_error(what + limits::refuse(size_limit, double(size)));
     std::ifstream in(path, std::ios::binary);
     if (!in) throw std::runtime_error(what + "cannot open: " + std::strerror(errno));
     std::string bytes(size, '\0');

@@ -19,8 +19,8 @@ class Walk {
 public:
     // `scalar` is empty at a container's opening bracket; `depth` counts the containers
     // around the value.
-    using Visit = std::function<bool(const std::string& pointer, std::size_t at, std::string_view scalar,
-                                     std::size_t depth)>;
+    using Visit =
+        std::function<bool(const std::string& pointer, std::size_t at, std::string_view scalar, std::size_t depth)>;
 
     Walk(std::string_view text, Visit visit) : s_(text), visit_(std::move(visit)) {}
 
@@ -131,13 +131,26 @@ private:
             if (at_end()) break;
             const char e = s_[i_++];
             switch (e) {
-                case 'b': r += '\b'; break;
-                case 'f': r += '\f'; break;
-                case 'n': r += '\n'; break;
-                case 'r': r += '\r'; break;
-                case 't': r += '\t'; break;
-                case 'u': append_utf8(r, code_point()); break;
-                default: r += e;  // \" \\ \/
+                case 'b':
+                    r += '\b';
+                    break;
+                case 'f':
+                    r += '\f';
+                    break;
+                case 'n':
+                    r += '\n';
+                    break;
+                case 'r':
+                    r += '\r';
+                    break;
+                case 't':
+                    r += '\t';
+                    break;
+                case 'u':
+                    append_utf8(r, code_point());
+                    break;
+                default:
+                    r += e;  // \" \\ \/
             }
         }
         if (!at_end()) ++i_;  // closing quote

@@ -136,8 +136,7 @@ Color Fields::color(const char* key, const limits::Range& range, const Color& fa
     const std::string ptr = pointer(key);
     if (!v.is_array() || v.size() != 3) fail(key, "must be an array of 3 numbers");
     Color c;
-    for (int k = 0; k < 3; ++k)
-        c[k] = float(number_at(v[std::size_t(k)], ptr + "/" + std::to_string(k), range, true));
+    for (int k = 0; k < 3; ++k) c[k] = float(number_at(v[std::size_t(k)], ptr + "/" + std::to_string(k), range, true));
     return c;
 }
 

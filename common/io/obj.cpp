@@ -67,7 +67,8 @@ void check_counts_and_indices(const std::string& text, const std::string& name) 
         if (!limits::contains(limits::obj_face_corners, count))
             fail(name, number, limits::refuse(limits::obj_face_corners, count));
         triangles += count - 2;
-        if (triangles > limits::mesh_triangles.max) fail(name, number, limits::refuse(limits::mesh_triangles, triangles));
+        if (triangles > limits::mesh_triangles.max)
+            fail(name, number, limits::refuse(limits::mesh_triangles, triangles));
     }
     if (double(highest) > vertices)
         fail(name, highest_line,

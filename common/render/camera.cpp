@@ -37,14 +37,10 @@ View Camera::view(int nx, int ny) const {
         half_height = window_height / Real(2);
     }
     const Real half_width = half_height * aspect;
-    return View{projection,
-                eye,
+    return View{projection, eye,
                 // Unit vectors first: the student's basis then never squares a huge or tiny one.
                 camera_basis(unit_vector(view_direction), unit_vector(up)),
-                Window{-half_width, half_width, -half_height, half_height},
-                focal_distance,
-                nx,
-                ny};
+                Window{-half_width, half_width, -half_height, half_height}, focal_distance, nx, ny};
 }
 
 }  // namespace rt

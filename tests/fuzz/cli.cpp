@@ -2,8 +2,8 @@
 // by NUL bytes. Parsing must end in an exit code or in a checked invocation, never touch a
 // file, and never accept what the renderer would refuse.
 #include "app/app.hpp"
-#include "io/image_file.hpp"
 #include "fuzz_support.hpp"
+#include "io/image_file.hpp"
 
 #include <vector>
 

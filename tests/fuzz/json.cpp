@@ -11,7 +11,8 @@ namespace {
 using nlohmann::json;
 
 void locate_all(const std::string& text, const json& value, const json::json_pointer& at, int depth) {
-    rt::fuzz::check(rt::locate(text, at.to_string()).has_value() || at.empty(), "a value the parser sees is not located");
+    rt::fuzz::check(rt::locate(text, at.to_string()).has_value() || at.empty(),
+                    "a value the parser sees is not located");
     if (depth == 0) return;
     if (value.is_object())
         for (const auto& [key, v] : value.items()) locate_all(text, v, at / key, depth - 1);

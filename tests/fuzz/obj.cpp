@@ -1,7 +1,7 @@
 // libFuzzer target: the OBJ reader (tinyobjloader behind io/obj). Every input must give a
 // mesh whose triangles index its vertices, or one line of error.
-#include "fuzz_support.hpp"
 #include "io/obj.hpp"
+#include "fuzz_support.hpp"
 
 #include <stdexcept>
 

@@ -5,8 +5,8 @@
 namespace rt {
 
 Shape read_icosphere(const Fields& f) {
-    return Mesh(icosphere(f.vec3("center"), f.length("radius"),
-                          f.integer("subdivisions", limits::icosphere_subdivisions, 2)));
+    return Mesh(
+        icosphere(f.vec3("center"), f.length("radius"), f.integer("subdivisions", limits::icosphere_subdivisions, 2)));
 }
 
 }  // namespace rt
