@@ -21,22 +21,17 @@ import subprocess
 import sys
 import time
 
+sys.path.insert(0, str(pathlib.Path(__file__).parent))
+from checks import check, finish  # noqa: E402
+
 root, bin_dir, work = (pathlib.Path(a) for a in sys.argv[1:4])
 work = work.resolve()
 out = work / "out"
 inputs = work / "inputs"
 for d in (out, inputs):
     d.mkdir(parents=True, exist_ok=True)
-passed = failed = 0
 
 
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        print("FAIL:", what)
 
 
 def leftovers():
@@ -427,5 +422,4 @@ for sig in (signal.SIGINT, signal.SIGTERM):
         else:
             check(code == -sig and not files, f"{sig.name} after {delay} s: exit {code}, left {files}")
 
-print(f"bad_input_test: {passed} passed, {failed} failed")
-sys.exit(1 if failed else 0)
+finish("bad_input_test")

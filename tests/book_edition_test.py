@@ -13,16 +13,12 @@ import re
 import subprocess
 import sys
 
+sys.path.insert(0, str(pathlib.Path(__file__).parent))
+from checks import check, finish  # noqa: E402
+
 root, tool, work = (pathlib.Path(a) for a in sys.argv[1:4])
-passed = failed = 0
 
 
-def check(ok, what):
-    global passed, failed
-    passed += ok
-    failed += not ok
-    if not ok:
-        print("FAIL:", what)
 
 
 def edition(name):
@@ -50,5 +46,4 @@ for name, exercise, line in bodies:
     shown += line in instructor
 check(shown > len(bodies) // 2, f"instructor edition shows only {shown} of {len(bodies)} body lines")
 check("yours to write" in student, "student edition has no exercise placeholders")
-print(f"{passed} passed, {failed} failed")
-sys.exit(1 if failed else 0)
+finish("book_edition_test")

@@ -17,21 +17,16 @@ import re
 import subprocess
 import sys
 
+sys.path.insert(0, str(pathlib.Path(__file__).parent))
+from checks import check, finish  # noqa: E402
+
 import jsonschema
 
 root, limits_tool, chapter, work = (pathlib.Path(a) for a in sys.argv[1:5])
 work.mkdir(parents=True, exist_ok=True)
 schema = json.loads((root / "common/io/scene.schema.json").read_text())
-passed = failed = 0
 
 
-def check(ok, what):
-    global passed, failed
-    if ok:
-        passed += 1
-    else:
-        failed += 1
-        print("FAIL:", what)
 
 
 def resolve(pointer):
@@ -83,5 +78,4 @@ for path in bad:
     code, err = loads(path)
     check(code == 2 and err.count("\n") == 0 and path.name in err, f"{path}: loader exit {code}, message {err!r}")
 
-print(f"{passed} passed, {failed} failed")
-sys.exit(1 if failed else 0)
+finish("schema_test")
