@@ -9,9 +9,12 @@
 #include "render/integrators.hpp"
 #include "render/render.hpp"
 #include "support.hpp"
+#include "support/source_dir.hpp"
 
 #include <cmath>
 #include <cstring>
+#include <filesystem>
+#include <fstream>
 #include <limits>
 
 using namespace rt;
@@ -230,5 +233,33 @@ TEST_CASE("the render loop writes only finite pixels and counts the samples it l
     CHECK(r.counters.nonfinite_samples > 0);
     CHECK(r.counters.nonfinite_samples < std::uint64_t(8 * 6 * 2));
     CHECK(r.image.at(0, 5) == Color(0.5f));  // bottom left: every sample finite
+}
+}  // TEST_SUITE("common")
+
+TEST_SUITE("common") {
+TEST_CASE("fuzz regressions: every input a fuzzer ever broke a reader with now gets one line of error or a result") {
+    namespace fs = std::filesystem;
+    const fs::path root = fs::path(rt::test::source_dir()) / "tests/fuzz/regressions";
+    int replayed = 0;
+    for (const char* target : {"scene", "json", "obj", "image"}) {
+        if (!fs::is_directory(root / target)) continue;
+        for (const auto& entry : fs::directory_iterator(root / target)) {
+            std::ifstream in(entry.path(), std::ios::binary);
+            const std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+            CAPTURE(entry.path().string());
+            std::string message;
+            try {
+                if (std::string(target) == "scene") (void)load_scene_text(bytes, "fuzz.json", "/nonexistent");
+                if (std::string(target) == "json") (void)check_json_text(bytes);
+                if (std::string(target) == "obj") (void)load_obj_text(bytes, "fuzz.obj");
+                if (std::string(target) == "image") (void)decode_image(bytes, "fuzz");
+            } catch (const std::runtime_error& e) {
+                message = e.what();
+            }
+            CHECK(message.find('\n') == std::string::npos);
+            ++replayed;
+        }
+    }
+    CHECK(replayed >= 1);
 }
 }  // TEST_SUITE("common")
