@@ -1,4 +1,4 @@
-// rtlab-diff: compares two PNG images as a grader does.
+// rtlab-diff: compares two images (PNG or PFM) as a grader does.
 //
 // Errors are in 8-bit levels of the encoded (sRGB) values, per channel, which is what a
 // viewer sees. With --radius R, each pixel is compared with the best-matching pixel within
@@ -64,7 +64,7 @@ std::vector<float> one_way(const Levels& a, const Levels& b, int radius, std::ve
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App cli{"rtlab-diff: compare two PNG images", "rtlab-diff"};
+    CLI::App cli{"rtlab-diff: compare two images (PNG or PFM)", "rtlab-diff"};
     std::string a_path, b_path, heatmap;
     int radius = 0;
     float threshold = 8, max_rmse = -1, max_over = -1, min_psnr = -1, max_error = -1;
