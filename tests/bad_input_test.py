@@ -276,7 +276,7 @@ mesh("index_huge", TRI + "f 1 2 99999999999\n", ["index_huge.obj:4", "vertex ind
 mesh("index_past_1e12", TRI + "f 1 2 99999999999999999999\n", ["vertex index past 10^12"])
 mesh("index_zero", TRI + "f 0 1 2\n", ["index_zero.obj:4", "vertex index 0"])
 mesh("index_before_first", TRI + "f -1 -2 -4\n", ["vertex index -4 reaches before the first vertex"])
-mesh("face_two_corners", TRI + "f 1 2\n", ["face_two_corners.obj:4", "a face needs at least 3 corners"])
+mesh("face_two_corners", TRI + "f 1 2\n", ["face_two_corners.obj:4", "OBJ face corners must be in 3..255, not 2"])
 mesh("face_garbage", TRI + "f a b c\n", ["face corner 'a' has no vertex index"])
 mesh("no_faces", TRI, ["no triangles in the file"])
 mesh("empty", "", ["no triangles in the file"])

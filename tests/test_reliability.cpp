@@ -152,7 +152,7 @@ TEST_CASE("OBJ: line numbers in messages, faces fanned from their first corner")
     CHECK_THROWS_WITH_AS(load_obj_text("v 0 0 0\nv 1 0 0\nv 0 1 0\n\nf 1 2 99999999999\n", "big.obj"),
                          "mesh big.obj:5: vertex index 99999999999, but the file has 3 vertices", std::runtime_error);
     CHECK_THROWS_WITH_AS(load_obj_text("v 0 0 0\nf 1 1\n", "two.obj"),
-                         "mesh two.obj:2: a face needs at least 3 corners, this one has 2", std::runtime_error);
+                         "mesh two.obj:2: OBJ face corners must be in 3..255, not 2", std::runtime_error);
     CHECK_THROWS_WITH_AS(load_obj_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "zero.obj"),
                          "mesh zero.obj:4: vertex index 0 (OBJ counts vertices from 1)", std::runtime_error);
     // A polygon of 255 corners (tinyobjloader's limit): 253 triangles; one more corner is

@@ -162,14 +162,12 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
     if (cli.count("--output") && inv.output.empty()) return usage("--output: must not be empty");
     if (inv.output.empty()) inv.output = "out/" + id_ + "/" + inv.scene.name + ".png";
     if (!is_image_path(inv.output)) return usage("--output: '" + inv.output + "' must end in .png or .pfm");
-    try {
+    try {  // the library's own checks, before any work
         check_budget(o);
+        if (!inv.pick.empty()) check_pick(o, inv.pick[0], inv.pick[1]);
     } catch (const std::invalid_argument& e) {
         return usage(e.what());
     }
-    if (!inv.pick.empty() && (inv.pick[0] < 0 || inv.pick[0] >= o.width || inv.pick[1] < 0 || inv.pick[1] >= o.height))
-        return usage("--pick: pixel " + std::to_string(inv.pick[0]) + "," + std::to_string(inv.pick[1]) +
-                     " is outside the " + std::to_string(o.width) + "x" + std::to_string(o.height) + " image");
     return std::nullopt;
 }
 

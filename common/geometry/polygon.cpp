@@ -60,7 +60,6 @@ std::size_t off_plane_vertex(const std::vector<Vec3>& v, const Vec3& n, Real tol
 Polygon::Polygon(std::vector<Vec3> vertices) : vertices_(std::move(vertices)) {
     const std::string what = "polygon";
     const std::size_t m = vertices_.size();
-    if (m < 3) throw std::invalid_argument(what + ": needs at least 3 vertices, has " + std::to_string(m));
     if (!limits::contains(limits::polygon_vertices, double(m)))
         throw std::invalid_argument(what + ": " + limits::refuse(limits::polygon_vertices, double(m)));
     for (std::size_t i = 0; i < m; ++i) {

@@ -62,8 +62,8 @@ void check_counts_and_indices(const std::string& text, const std::string& name) 
                          std::to_string(std::size_t(vertices)) + " so far)");
             if (!negative && index > highest) highest = index, highest_line = number;
         }
-        if (count < 3) fail(name, number, "a face needs at least 3 corners, this one has " + std::to_string(count));
-        // tinyobjloader counts a face's corners in a byte: past 255 it would silently wrap.
+        // At least a triangle; and tinyobjloader counts a face's corners in a byte, so past 255
+        // it would silently wrap.
         if (!limits::contains(limits::obj_face_corners, count))
             fail(name, number, limits::refuse(limits::obj_face_corners, count));
         triangles += count - 2;

@@ -166,11 +166,16 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
     return result;
 }
 
+void check_pick(const RenderOptions& o, int x, int y) {
+    if (x < 0 || x >= o.width || y < 0 || y >= o.height)
+        throw std::invalid_argument("--pick: pixel " + std::to_string(x) + "," + std::to_string(y) +
+                                    " is outside the " + std::to_string(o.width) + "x" + std::to_string(o.height) +
+                                    " image");
+}
+
 Pick pick(const Scene& scene, const RenderOptions& o, int x, int y) {
     check(scene, o);
-    if (x < 0 || x >= o.width || y < 0 || y >= o.height)
-        throw std::invalid_argument("pick: pixel " + std::to_string(x) + "," + std::to_string(y) + " is outside the " +
-                                    std::to_string(o.width) + "x" + std::to_string(o.height) + " image");
+    check_pick(o, x, y);
     const View view = scene.camera.view(o.width, o.height);
     Pick result{view.pixel_ray(x, o.height - 1 - y), std::nullopt};
     HitRecord rec;

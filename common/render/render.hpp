@@ -44,5 +44,7 @@ struct Pick {
     std::optional<HitRecord> hit;
 };
 Pick pick(const Scene& scene, const RenderOptions& options, int x, int y);
+// Throws std::invalid_argument unless (x, y) is a pixel of the image.
+void check_pick(const RenderOptions& options, int x, int y);
 
 }  // namespace rt
