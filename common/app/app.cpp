@@ -1,5 +1,6 @@
 #include "app/app.hpp"
 
+#include "app/ray_tree_svg.hpp"
 #include "core/text.hpp"
 #include "core/version.hpp"
 #include "geometry/limits.hpp"
@@ -28,6 +29,47 @@ json to_json(const Vec3& v) {
     return json::array({v.x, v.y, v.z});
 }
 
+json to_json(const Color& c) {
+    return json::array({c.r, c.g, c.b});
+}
+
+json hit_json(const Scene& scene, const HitRecord& h) {
+    json j{{"surface", h.surface < scene.surfaces.size() ? scene.surfaces.name(h.surface) : ""},
+           {"t", h.t},
+           {"point", to_json(h.p)},
+           {"normal", to_json(h.normal)}};
+    if (h.shading_normal != h.normal) j["shading_normal"] = to_json(h.shading_normal);
+    if (h.primitive != kNone) j["triangle"] = h.primitive;
+    return j;
+}
+
+// One ray of the tree and, nested, the rays it cast. JSON has no infinity: an interval
+// that is open-ended ends in null.
+json node_json(const Scene& scene, const RayTree& tree, const std::vector<std::vector<int>>& children, int i) {
+    const RayNode& n = tree.nodes[std::size_t(i)];
+    const auto end = [](Real v) { return std::isfinite(v) ? json(v) : json(nullptr); };
+    json j{{"kind", kRayKindNames[std::size_t(n.kind)]},
+           {"depth", n.depth},
+           {"origin", to_json(n.ray.origin)},
+           {"direction", to_json(n.ray.direction)},
+           {"interval", json::array({end(n.interval.min), end(n.interval.max)})}};
+    if (n.kind == RayKind::shadow) {
+        j["light"] = n.light;
+        j["blocked"] = n.hit;
+        if (n.hit && n.record.surface != kNone) j["blocker"] = hit_json(scene, n.record);
+    } else {
+        j["hit"] = n.hit ? hit_json(scene, n.record) : json(nullptr);
+    }
+    if (*n.weight_of) j["weight"] = {{"of", n.weight_of}, {"value", to_json(n.weight)}};
+    j["radiance"] = to_json(n.radiance);
+    if (*n.weight_of && n.kind != RayKind::shadow) j["contributes"] = to_json(n.weight * n.radiance);
+    if (*n.note) j["note"] = n.note;
+    json kids = json::array();
+    for (int c : children[std::size_t(i)]) kids.push_back(node_json(scene, tree, children, c));
+    if (!kids.empty()) j["children"] = kids;
+    return j;
+}
+
 json pick_json(const SceneEntry& entry, const Scene& scene, int x, int y, const Pick& p) {
     json j{{"scene", entry.name},
            {"pixel", {x, y}},
@@ -44,6 +86,20 @@ json pick_json(const SceneEntry& entry, const Scene& scene, int x, int y, const 
             j["beta"] = h.beta;
             j["gamma"] = h.gamma;
         }
+    }
+    j["color"] = to_json(p.color);
+    if (!p.tree.nodes.empty()) {
+        std::vector<std::vector<int>> children(p.tree.nodes.size());
+        int root = -1;
+        for (std::size_t i = 0; i < p.tree.nodes.size(); ++i) {
+            const int parent = p.tree.nodes[i].parent;
+            if (parent < 0) {
+                if (root < 0) root = int(i);
+            } else {
+                children[std::size_t(parent)].push_back(int(i));
+            }
+        }
+        j["tree"] = node_json(scene, p.tree, children, root);
     }
     return j;
 }
@@ -72,7 +128,9 @@ json stats_json(const std::string& chapter, const SceneEntry& entry, const Rende
             {"surfaces", s.surfaces}, {"triangles", s.triangles}, {"lights", s.lights}, {"materials", s.materials}};
         j["scene_skipped"] = {{"black_lights", s.lights_black},
                               {"unused_materials", s.materials_unused},
-                              {"degenerate_triangles", s.degenerate_triangles}};
+                              {"degenerate_triangles", s.degenerate_triangles},
+                              {"identity_transforms", s.identity_transforms}};
+        j["instancing"] = {{"instances", s.instances}, {"shared_bytes", s.shared_bytes}};
     }
     return j;
 }
@@ -126,6 +184,10 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
     cli.add_option("--pick", inv.pick, "print what pixel X,Y (from the top left) sees, as JSON, and exit")
         ->delimiter(',')
         ->expected(2);
+    cli.add_option("--svg", inv.svg, "with --pick: also draw the pixel's ray tree into FILE.svg");
+    cli.add_option("--depth", inv.max_depth, "maximum recursion depth of reflection and refraction (default: the scene's)")
+        ->check(whole)
+        ->check(range(limits::recursion_depth));
     cli.add_flag("--stats", inv.stats, "print render statistics as one JSON line");
     cli.set_version_flag("--version",
                          std::string(id_ + " (rtlab " + kVersion + ", Real=" + real_name() + ", " + RTLAB_TRACK_NAME +
@@ -160,6 +222,11 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
         return usage("--scene: unknown scene '" + scene_name + "' (see --list-scenes, or give a FILE.json)");
     }
     if (cli.count("--output") && inv.output.empty()) return usage("--output: must not be empty");
+    if (cli.count("--svg")) {
+        if (inv.pick.empty()) return usage("--svg: draws a picked pixel's ray tree, so it needs --pick X,Y");
+        if (inv.svg.size() < 5 || !inv.svg.ends_with(".svg") || inv.svg.ends_with("/.svg"))
+            return usage("--svg: '" + inv.svg + "' must end in .svg");
+    }
     if (inv.output.empty()) inv.output = "out/" + id_ + "/" + inv.scene.name + ".png";
     if (!is_image_path(inv.output)) return usage("--output: '" + inv.output + "' must end in .png or .pfm");
     try {  // the library's own checks, before any work
@@ -176,9 +243,16 @@ int ChapterApp::execute(const Invocation& inv) const {
         SceneSummary summary;
         Scene scene = inv.scene.build(summary);
         scene.name = inv.scene.name;
+        if (inv.max_depth) scene.max_depth = *inv.max_depth;
         if (!inv.pick.empty()) {
             const Pick p = pick(scene, inv.options, inv.pick[0], inv.pick[1]);
-            std::printf("%s\n", dump(pick_json(inv.scene, scene, inv.pick[0], inv.pick[1], p)).c_str());
+            const std::string text = dump(pick_json(inv.scene, scene, inv.pick[0], inv.pick[1], p));
+            if (!inv.svg.empty())
+                write_file_atomically(inv.svg, ray_tree_svg(scene, p.tree,
+                                                            inv.scene.name + ", pixel " + std::to_string(inv.pick[0]) +
+                                                                "," + std::to_string(inv.pick[1]),
+                                                            p.color));
+            std::printf("%s\n", text.c_str());
             return 0;
         }
         RenderOptions o = inv.options;

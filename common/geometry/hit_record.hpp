@@ -24,6 +24,9 @@ struct HitRecord {
     Real t = kInfinity;
     Vec3 p{0};       // the hit point
     Vec3 normal{0};  // unit geometric normal, pointing out of the surface (never flipped)
+    // Unit normal for shading: the geometric one, except on meshes with vertex normals, where
+    // it is interpolated (smooth shading). Offsets and inside/outside use `normal` only.
+    Vec3 shading_normal{0};
     SurfaceId surface = kNone;
     MaterialId material = 0;
     std::uint32_t primitive = kNone;  // which triangle of a mesh, for picking

@@ -27,6 +27,10 @@ inline constexpr Range length{"length", 1e-6, 1e8, "", "/$defs/length"};
 inline constexpr Range reflectance{"reflectance", 0, 1, "", "/$defs/reflectance/items"};
 inline constexpr Range radiance{"radiance", 0, 1e6, "", "/$defs/radiance/items"};
 inline constexpr Range exponent{"Phong exponent", 1e-3, 1e6, "", "/$defs/material/properties/exponent"};
+inline constexpr Range index_of_refraction{"index of refraction", 0.01, 100, "",
+                                          "/$defs/material/properties/ior"};
+inline constexpr Range recursion_depth{"recursion depth", 0, 64, "", "/properties/max_depth"};
+inline constexpr Range angle{"angle", -3600, 3600, "degrees", "/$defs/transform_step/properties/degrees"};
 inline constexpr Range field_of_view{"field of view", 1e-3, 179.9, "degrees", "/$defs/camera/properties/fov"};
 // Counts in a scene file.
 inline constexpr Range triangle_vertices{"triangle vertices", 3, 3, "", "/$defs/surface/oneOf/1/properties/vertices"};
@@ -59,6 +63,9 @@ inline constexpr Range all[] = {coordinate,
                                 reflectance,
                                 radiance,
                                 exponent,
+                                index_of_refraction,
+                                recursion_depth,
+                                angle,
                                 field_of_view,
                                 triangle_vertices,
                                 polygon_vertices,

@@ -16,6 +16,16 @@ void validate(const MeshData& mesh, const std::string& what) {
                 throw std::invalid_argument(what + ": vertex " + std::to_string(i + 1) + ": " +
                                             limits::refuse(limits::coordinate, double(p[k])));
     }
+    if (!mesh.normal_triangles.empty() && mesh.normal_triangles.size() != mesh.triangles.size())
+        throw std::invalid_argument(what + ": vertex normals given for some triangles only");
+    for (std::size_t i = 0; i < mesh.normals.size(); ++i)
+        if (!std::isfinite(mesh.normals[i].x) || !std::isfinite(mesh.normals[i].y) || !std::isfinite(mesh.normals[i].z))
+            throw std::invalid_argument(what + ": vertex normal " + std::to_string(i + 1) + " is not finite");
+    for (std::size_t i = 0; i < mesh.normal_triangles.size(); ++i)
+        for (std::uint32_t v : mesh.normal_triangles[i])
+            if (v >= mesh.normals.size())
+                throw std::invalid_argument(what + ": triangle " + std::to_string(i) + " uses normal " +
+                                            std::to_string(v) + " of " + std::to_string(mesh.normals.size()));
     for (std::size_t i = 0; i < mesh.triangles.size(); ++i)
         for (std::uint32_t v : mesh.triangles[i])
             if (v >= mesh.positions.size())
@@ -25,15 +35,19 @@ void validate(const MeshData& mesh, const std::string& what) {
 
 Mesh::Mesh(MeshData data) {
     validate(data, "mesh");
-    std::vector<std::array<std::uint32_t, 3>> kept;
+    std::vector<std::array<std::uint32_t, 3>> kept, kept_normals;
     kept.reserve(data.triangles.size());
-    for (const auto& t : data.triangles) {
+    for (std::size_t k = 0; k < data.triangles.size(); ++k) {
+        const auto& t = data.triangles[k];
         const Vec3 n =
             glm::cross(data.positions[t[1]] - data.positions[t[0]], data.positions[t[2]] - data.positions[t[0]]);
-        if (glm::dot(n, n) > 0) kept.push_back(t);
+        if (!(glm::dot(n, n) > 0)) continue;
+        kept.push_back(t);
+        if (!data.normal_triangles.empty()) kept_normals.push_back(data.normal_triangles[k]);
     }
     dropped_ = data.triangles.size() - kept.size();
     data.triangles = std::move(kept);
+    data.normal_triangles = std::move(kept_normals);
     if (data.triangles.empty()) throw std::invalid_argument("mesh: every triangle is degenerate");
     for (const auto& t : data.triangles)
         for (std::uint32_t v : t) box_.expand(data.positions[v]);
@@ -41,6 +55,7 @@ Mesh::Mesh(MeshData data) {
 }
 
 bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
+    if (!might_hit(mesh.box(), ray, interval)) return false;
     const MeshData& d = mesh.data();
     bool found = false;
     for (std::size_t k = 0; k < d.triangles.size(); ++k) {
@@ -56,6 +71,7 @@ bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
 }
 
 bool occluded(const Mesh& mesh, const Ray& ray, Interval interval) {
+    if (!might_hit(mesh.box(), ray, interval)) return false;
     const MeshData& d = mesh.data();
     TriangleHit h;
     for (const auto& tri : d.triangles)
@@ -67,7 +83,35 @@ bool occluded(const Mesh& mesh, const Ray& ray, Interval interval) {
 HitRecord record(const Mesh& mesh, const Ray&, const MeshHit& h, SurfaceRef who) {
     const MeshData& d = mesh.data();
     const auto& tri = d.triangles[h.index];
-    return triangle_record(d.positions[tri[0]], d.positions[tri[1]], d.positions[tri[2]], h.triangle, who, h.index);
+    HitRecord rec =
+        triangle_record(d.positions[tri[0]], d.positions[tri[1]], d.positions[tri[2]], h.triangle, who, h.index);
+    if (mesh.smooth()) {
+        const auto& nt = d.normal_triangles[h.index];
+        const Real alpha = 1 - h.triangle.beta - h.triangle.gamma;
+        const Vec3 n = unit_vector(alpha * d.normals[nt[0]] + h.triangle.beta * d.normals[nt[1]] +
+                                   h.triangle.gamma * d.normals[nt[2]]);
+        // Vertex normals that cancel out (or point nowhere) leave the flat normal; ones that
+        // point into the surface are turned to the side the geometric normal is on.
+        if (glm::dot(n, n) > 0) rec.shading_normal = glm::dot(n, rec.normal) < 0 ? -n : n;
+    }
+    return rec;
+}
+
+void compute_vertex_normals(MeshData& mesh) {
+    mesh.normals.assign(mesh.positions.size(), Vec3(0));
+    for (const auto& t : mesh.triangles) {
+        // The cross product's length is twice the triangle's area: larger triangles weigh more.
+        const Vec3 n =
+            glm::cross(mesh.positions[t[1]] - mesh.positions[t[0]], mesh.positions[t[2]] - mesh.positions[t[0]]);
+        for (std::uint32_t v : t) mesh.normals[v] += n;
+    }
+    for (Vec3& n : mesh.normals) n = unit_vector(n);
+    mesh.normal_triangles = mesh.triangles;
+}
+
+std::size_t memory_bytes(const MeshData& mesh) {
+    return mesh.positions.size() * sizeof(Vec3) + mesh.triangles.size() * sizeof(mesh.triangles[0]) +
+           mesh.normals.size() * sizeof(Vec3) + mesh.normal_triangles.size() * sizeof(mesh.normal_triangles[0]);
 }
 
 }  // namespace rt

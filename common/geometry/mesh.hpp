@@ -14,7 +14,18 @@ namespace rt {
 struct MeshData {
     std::vector<Vec3> positions;
     std::vector<std::array<std::uint32_t, 3>> triangles;  // counter-clockwise seen from outside
+    // Optional vertex normals for smooth shading: normal_triangles[k] indexes `normals` for
+    // the corners of triangles[k]. Both empty for a mesh shaded flat.
+    std::vector<Vec3> normals;
+    std::vector<std::array<std::uint32_t, 3>> normal_triangles;
 };
+
+// Gives every vertex the area-weighted average of the normals of the triangles around it,
+// so that the mesh shades smoothly (a sphere made of triangles looks round).
+void compute_vertex_normals(MeshData& mesh);
+
+// What the mesh's arrays take in memory, for --stats.
+std::size_t memory_bytes(const MeshData& mesh);
 
 // Throws std::invalid_argument naming the first problem: an index out of range, a
 // position outside limits::coordinate (or not finite), no triangles.
@@ -38,6 +49,7 @@ public:
     explicit Mesh(MeshData data);
 
     const MeshData& data() const { return *data_; }
+    bool smooth() const { return !data_->normal_triangles.empty(); }
     std::size_t dropped_degenerate() const { return dropped_; }
     const Box& box() const { return box_; }
 

@@ -91,6 +91,7 @@ HitRecord record(const Polygon& polygon, const Ray& ray, const PolygonHit& h, Su
     rec.t = h.t;
     rec.p = ray.at(h.t);
     rec.normal = polygon.normal();
+    rec.shading_normal = rec.normal;
     rec.surface = who.surface;
     rec.material = who.material;
     return rec;

@@ -2,6 +2,7 @@
 // A shape is geometry only: one of a closed set of plain structs. Queries on a Shape are a
 // switch over that set (std::visit), not a virtual call through a pointer, so the compiler
 // can inline each kind's test into the loop that calls it.
+#include "geometry/instance.hpp"
 #include "geometry/mesh.hpp"
 #include "geometry/polygon.hpp"
 #include "geometry/sphere.hpp"
@@ -11,13 +12,20 @@
 
 namespace rt {
 
-using Shape = std::variant<Sphere, Triangle, Polygon, Mesh>;
+// A struct rather than an alias so that Instance can name it before it is complete.
+struct Shape : std::variant<Sphere, Triangle, Polygon, Mesh, Instance> {
+    using variant::variant;
+};
 
 // The kind's name, as scene files and --pick say it.
 inline const char* shape_kind(const Shape& shape) {
-    constexpr const char* names[] = {"sphere", "triangle", "polygon", "mesh"};
+    constexpr const char* names[] = {"sphere", "triangle", "polygon", "mesh", "instance"};
     return names[shape.index()];
 }
+
+// What a shape's own data takes in memory; a mesh counts its arrays, which its copies and
+// instances share. For --stats.
+std::size_t memory_bytes(const Shape& shape);
 
 // The closest hit of one shape in the interval, as a whole record owned by `who`. The
 // shape's own test finds the small result; `record` builds everything else from it.

@@ -19,6 +19,7 @@ HitRecord record(const Sphere& s, const Ray& ray, const SphereHit& h, SurfaceRef
     rec.t = h.t;
     rec.p = s.center + s.radius * n;
     rec.normal = n;
+    rec.shading_normal = n;
     rec.surface = who.surface;
     rec.material = who.material;
     return rec;

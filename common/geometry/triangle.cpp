@@ -13,6 +13,7 @@ HitRecord triangle_record(const Vec3& a, const Vec3& b, const Vec3& c, const Tri
     // within rounding of the vertices, whatever the ray's length.
     rec.p = a + h.beta * (b - a) + h.gamma * (c - a);
     rec.normal = glm::normalize(glm::cross(b - a, c - a));
+    rec.shading_normal = rec.normal;
     rec.surface = who.surface;
     rec.material = who.material;
     rec.primitive = primitive;

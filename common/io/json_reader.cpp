@@ -153,6 +153,26 @@ std::vector<Vec3> Fields::points(const char* key, const limits::Range& range) co
     return result;
 }
 
+bool Fields::is_number(const char* key) const {
+    return has(key) && object_.at(key).is_number();
+}
+
+bool Fields::flag(const char* key, bool fallback) const {
+    if (!has(key)) return fallback;
+    const json& v = need(key);
+    if (!v.is_boolean()) fail(key, "must be true or false");
+    return v.get<bool>();
+}
+
+std::vector<Fields> Fields::objects(const char* key) const {
+    const json& v = need(key);
+    if (!v.is_array()) fail(key, "must be an array of objects");
+    std::vector<Fields> result;
+    result.reserve(v.size());
+    for (std::size_t i = 0; i < v.size(); ++i) result.emplace_back(reader_, v[i], pointer(key) + "/" + std::to_string(i));
+    return result;
+}
+
 std::string Fields::file(const char* key) const {
     std::filesystem::path path = text(key);
     if (path.is_relative()) path = std::filesystem::path(reader_.base_dir()) / path;

@@ -67,6 +67,10 @@ public:
     Color color(const char* key, const limits::Range& range, const Color& fallback) const;
     // An array of points whose length is in `range`.
     std::vector<Vec3> points(const char* key, const limits::Range& range) const;
+    bool flag(const char* key, bool fallback) const;
+    bool is_number(const char* key) const;
+    // An array of objects, each read as Fields of its own.
+    std::vector<Fields> objects(const char* key) const;
     // A file name, relative to the scene file's directory unless absolute.
     std::string file(const char* key) const;
 

@@ -97,6 +97,17 @@ MeshData load_obj_text(const std::string& text, const std::string& name) {
     mesh.positions.reserve(positions.size() / 3);
     for (std::size_t i = 0; i + 2 < positions.size(); i += 3)
         mesh.positions.push_back(Vec3(positions[i], positions[i + 1], positions[i + 2]));
+    // Vertex normals ("vn"), used for smooth shading when every corner of every face names
+    // one; a file that gives them for some corners only is shaded flat.
+    const auto& normals = reader.GetAttrib().normals;
+    bool all_normals = !normals.empty();
+    for (const auto& shape : reader.GetShapes())
+        for (const auto& corner : shape.mesh.indices)
+            if (corner.normal_index < 0 || std::size_t(corner.normal_index) * 3 + 2 >= normals.size())
+                all_normals = false;
+    if (all_normals)
+        for (std::size_t i = 0; i + 2 < normals.size(); i += 3)
+            mesh.normals.push_back(Vec3(normals[i], normals[i + 1], normals[i + 2]));
     for (const auto& shape : reader.GetShapes()) {
         const auto& idx = shape.mesh.indices;
         std::size_t offset = 0;
@@ -107,7 +118,11 @@ MeshData load_obj_text(const std::string& text, const std::string& name) {
                     fail(name, 0, "a face uses a vertex the file does not have");
                 return std::uint32_t(i);
             };
-            for (std::size_t k = 1; k + 1 < corners; ++k) mesh.triangles.push_back({v(0), v(k), v(k + 1)});
+            const auto n = [&](std::size_t k) { return std::uint32_t(idx[offset + k].normal_index); };
+            for (std::size_t k = 1; k + 1 < corners; ++k) {
+                mesh.triangles.push_back({v(0), v(k), v(k + 1)});
+                if (all_normals) mesh.normal_triangles.push_back({n(0), n(k), n(k + 1)});
+            }
             offset += corners;
         }
     }

@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <memory>
 #include <map>
 
 namespace rt {
@@ -53,21 +54,42 @@ Light read_light(const Fields& f) {
     f.fail("type", "unknown light type \"" + type + "\" (expected " + type_names(light_types()) + ")");
 }
 
-// The shape of one /surfaces entry, by its type's module.
-Shape read_shape(const Fields& f) {
+// The shape of one /surfaces (or /shapes) entry, by its type's module. Keys every type
+// takes: "smooth" (meshes only) gives a mesh vertex normals for smooth shading.
+Shape read_shape(const Fields& f, std::vector<const char*> common) {
     const std::string type = f.text("type");
     for (const SurfaceType& t : surface_types()) {
         if (type != t.name) continue;
-        std::vector<const char*> keys = {"type", "name", "material"};
-        keys.insert(keys.end(), t.keys.begin(), t.keys.end());
-        f.only(keys);
+        common.push_back("type");
+        common.push_back("smooth");
+        common.insert(common.end(), t.keys.begin(), t.keys.end());
+        f.only(common);
         try {
-            return t.read(f);
+            Shape shape = t.read(f);
+            if (f.flag("smooth", false)) {
+                const Mesh* mesh = std::get_if<Mesh>(&shape);
+                if (!mesh) f.fail("smooth", "only meshes have vertex normals; a " + type + " is shaded by its own normal");
+                MeshData data = mesh->data();
+                compute_vertex_normals(data);
+                shape = Mesh(std::move(data));
+            }
+            return shape;
         } catch (const std::invalid_argument& e) {  // degenerate geometry, a limit passed
             f.fail("", e.what());
         }
     }
-    f.fail("type", "unknown surface type \"" + type + "\" (expected " + type_names(surface_types()) + ")");
+    if (type == "instance") f.fail("type", "an instance names a shape of /shapes; it cannot be one there");
+    f.fail("type", "unknown surface type \"" + type + "\" (expected " + type_names(surface_types()) +
+                       " or instance)");
+}
+
+void count_triangles(const Shape& shape, SceneSummary& summary) {
+    if (const auto* mesh = std::get_if<Mesh>(&shape)) {
+        summary.triangles += mesh->data().triangles.size();
+        summary.degenerate_triangles += mesh->dropped_degenerate();
+    } else if (std::holds_alternative<Triangle>(shape)) {
+        summary.triangles += 1;
+    }
 }
 
 std::string where(const std::string& text, const std::string& filename, std::size_t offset) {
@@ -100,8 +122,8 @@ Scene load_scene_text(const std::string& text, const std::string& filename, cons
     const json doc = parse(text, filename);
     const JsonReader reader(text, filename, base_dir);
     const Fields top(reader, doc, "");
-    top.only(
-        {"$schema", "description", "camera", "shading", "background", "ambient", "materials", "lights", "surfaces"});
+    top.only({"$schema", "description", "camera", "shading", "background", "ambient", "max_depth", "offset",
+              "materials", "lights", "shapes", "surfaces"});
     SceneSummary summary;
     summary.from_file = true;
     Scene scene;
@@ -111,7 +133,19 @@ Scene load_scene_text(const std::string& text, const std::string& filename, cons
     const std::string shading = top.text("shading", "phong");
     scene.integrator = make_integrator(shading);
     if (!scene.integrator)
-        top.fail("shading", "unknown shading \"" + shading + "\" (expected phong, normal, barycentric or direction)");
+        top.fail("shading",
+                 "unknown shading \"" + shading + "\" (expected phong, whitted, normal, barycentric or direction)");
+    scene.max_depth = top.integer("max_depth", limits::recursion_depth, scene.max_depth);
+    if (top.has("offset")) {
+        const Fields o(reader, doc["offset"], "/offset");
+        o.only({"method", "epsilon"});
+        const std::string method = o.text("method", "robust");
+        bool known = false;
+        for (int k = 0; k < 3; ++k)
+            if (method == kOffsetMethodNames[k]) scene.offset.method = OffsetMethod(k), known = true;
+        if (!known) o.fail("method", "unknown offset method \"" + method + "\" (expected robust, course or normal)");
+        scene.offset.epsilon = o.length("epsilon", scene.offset.epsilon);
+    }
     scene.background = top.color("background", limits::radiance, scene.background);
     scene.ambient = top.color("ambient", limits::radiance, scene.ambient);
 
@@ -131,19 +165,41 @@ Scene load_scene_text(const std::string& text, const std::string& filename, cons
     summary.lights_black = scene.drop_unused_lights();
     summary.lights = int(scene.lights.size());
 
+    // Named shapes, read once and shared by every instance that names them.
+    std::map<std::string, std::shared_ptr<const Shape>> shapes;
+    std::map<std::string, int> shape_uses;
+    if (top.has("shapes")) {
+        const Fields all(reader, doc["shapes"], "/shapes");
+        for (const auto& [name, s] : doc["shapes"].items())
+            shapes.emplace(name, std::make_shared<const Shape>(read_shape(Fields(reader, s, "/shapes/" + name), {})));
+    }
+
     if (!top.has("surfaces")) top.fail("", "missing key 'surfaces'");
     const json& ss = doc["surfaces"];
     if (!ss.is_array()) top.fail("surfaces", "must be an array");
     std::map<std::string, MaterialId> used;
     for (std::size_t i = 0; i < ss.size(); ++i) {
         const Fields f(reader, ss[i], "/surfaces/" + std::to_string(i));
-        Shape shape = read_shape(f);
-        if (const auto* mesh = std::get_if<Mesh>(&shape)) {
-            summary.triangles += mesh->data().triangles.size();
-            summary.degenerate_triangles += mesh->dropped_degenerate();
-        } else if (std::holds_alternative<Triangle>(shape)) {
-            summary.triangles += 1;
+        std::shared_ptr<const Shape> base;
+        if (f.text("type") == "instance") {
+            f.only({"type", "name", "material", "shape", "transform"});
+            const std::string name = f.text("shape");
+            const auto it = shapes.find(name);
+            if (it == shapes.end()) f.fail("shape", "no shape named \"" + name + "\" in /shapes");
+            base = it->second;
+            if (shape_uses[name]++ > 0) summary.shared_bytes += memory_bytes(*base);
+        } else {
+            base = std::make_shared<const Shape>(read_shape(f, {"name", "material", "transform"}));
         }
+        const Affine to_world = f.has("transform") ? read_transform(f, "transform") : Affine{};
+        Shape shape = *base;  // a mesh's copy shares its triangles
+        if (!to_world.is_identity()) {
+            shape = Instance(base, to_world);  // read_transform has refused a singular one
+            ++summary.instances;
+        } else if (f.has("transform")) {
+            ++summary.identity_transforms;  // costs nothing per ray: the shape is used as it is
+        }
+        count_triangles(*base, summary);
         MaterialId material = 0;
         if (f.has("material")) {
             const std::string name = f.text("material");

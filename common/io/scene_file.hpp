@@ -17,6 +17,11 @@ struct SceneSummary {
     int lights_black = 0;  // colour (0,0,0): dropped, never evaluated
     std::uint64_t triangles = 0;
     std::uint64_t degenerate_triangles = 0;  // zero-area mesh triangles: dropped
+    int instances = 0;                       // surfaces that see a shape through a transform
+    int identity_transforms = 0;             // transforms that do nothing: no instance made
+    // What instancing saved: the bytes of the shapes that instances (and named shapes used
+    // more than once) share instead of holding copies.
+    std::uint64_t shared_bytes = 0;
 };
 
 // Throws SceneError. Relative mesh paths are relative to the scene file's directory.

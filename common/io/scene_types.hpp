@@ -50,5 +50,7 @@ Light read_point_light(const Fields& f);
 Light read_directional_light(const Fields& f);
 // Materials have one kind so far; its keys are checked here too.
 Material read_material(const Fields& f);
+// A list of transform steps at `key` (io/types/transform.cpp); fails for a singular result.
+Affine read_transform(const Fields& f, const char* key);
 
 }  // namespace rt

@@ -82,7 +82,8 @@ public:
     }
 };
 
-// The integrator a scene file names: "phong", "normal", "barycentric" or "direction".
+// The integrator a scene file names: "phong", "whitted" (render/whitted.hpp), "normal",
+// "barycentric" or "direction".
 // Null for an unknown name.
 std::shared_ptr<const Integrator> make_integrator(const std::string& name);
 

@@ -177,9 +177,14 @@ Pick pick(const Scene& scene, const RenderOptions& o, int x, int y) {
     check(scene, o);
     check_pick(o, x, y);
     const View view = scene.camera.view(o.width, o.height);
-    Pick result{view.pixel_ray(x, o.height - 1 - y), std::nullopt};
+    Pick result{view.pixel_ray(x, o.height - 1 - y), std::nullopt, {}, Color(0)};
     HitRecord rec;
     if (scene.hit(result.ray, Interval{}, rec)) result.hit = rec;
+    Sampler sampler(o.seed, std::uint64_t(y) * std::uint64_t(o.width) + std::uint64_t(x));
+    RayCounters counters;
+    TraceContext context{sampler, counters};
+    context.tree = &result.tree;
+    result.color = scene.integrator->Li(scene, result.ray, context);
     return result;
 }
 

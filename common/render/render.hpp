@@ -38,10 +38,14 @@ RenderResult render(const Scene& scene, const RenderOptions& options);
 CameraSample camera_sample(int i, int j, int spp, Sampler& sampler);
 
 // What the ray through the centre of image pixel (x, y) (y down from the top, as image
-// viewers count) sees: the picking use of ray tracing from the course's FAQ.
+// viewers count) sees: the picking use of ray tracing from the course's FAQ. The
+// integrator runs on that ray once more, recording every ray it casts: the ray tree
+// (empty for integrators that record nothing, those of chapters 01-05).
 struct Pick {
     Ray ray;
     std::optional<HitRecord> hit;
+    RayTree tree;
+    Color color{0};  // what the integrator returned for the ray
 };
 Pick pick(const Scene& scene, const RenderOptions& options, int x, int y);
 // Throws std::invalid_argument unless (x, y) is a pixel of the image.

@@ -2,6 +2,7 @@
 // Everything a render needs: what is seen (surfaces, materials, lights), from where
 // (camera) and how it is shaded (integrator).
 #include "accel/surface_list.hpp"
+#include "core/offset.hpp"
 #include "render/camera.hpp"
 #include "render/integrator.hpp"
 #include "shading/light.hpp"
@@ -23,6 +24,10 @@ struct Scene {
     Color background{0};
     Color ambient{0};  // c_a: ambient light, seen by every surface's diffuse colour
     std::shared_ptr<const Integrator> integrator;
+    // Recursive integrators (chapters 07-08): how many bounces a camera ray may start, and
+    // how secondary rays leave a surface (chapter 06).
+    int max_depth = 5;
+    Offset offset;
 
     MaterialId add_material(const Material& m) {
         materials.push_back(m);

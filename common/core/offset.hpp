@@ -1,0 +1,68 @@
+#pragma once
+// Where a secondary ray (shadow, reflection, refraction) starts, so that it does not hit the
+// surface it leaves because of rounding (book §6.3, course §9.5's epsilon). Three ways, kept
+// side by side because chapter 06 measures them against each other (the acne table).
+#include "core/interval.hpp"
+#include "core/ray.hpp"
+
+#include <cstdint>
+
+namespace rt {
+
+enum class OffsetMethod : std::uint8_t {
+    normal,  // start at p + epsilon n: a fixed distance off the surface
+    course,  // start at p, search t in [epsilon, max]: course §9.5 as printed
+    robust,  // start at offset_origin(p, n) (exercise 6.1), search from 0: no constant to choose
+};
+inline constexpr const char* kOffsetMethodNames[] = {"normal", "course", "robust"};
+
+struct Offset {
+    OffsetMethod method = OffsetMethod::robust;
+    Real epsilon = Real(1e-4);  // the constant of the normal and course methods
+};
+
+// Exercise 6.1: the origin for a ray leaving point p on the side n points to (n unit, the
+// geometric normal turned towards that side), after Waechter and Binder (Ray Tracing Gems,
+// chapter 6). Each coordinate moves a fixed number of units in the last place of its own
+// magnitude, so the step grows with the rounding error of p wherever p is; coordinates near
+// zero, where units in the last place vanish, move a fixed small distance instead.
+Vec3 offset_origin(const Vec3& p, const Vec3& n);
+
+// The constants of offset_origin for float and for double (see book §6.3).
+template <class R>
+struct OffsetConstants;
+template <>
+struct OffsetConstants<float> {
+    static constexpr float origin = 1.0f / 32;           // below this magnitude: a fixed step
+    static constexpr float fixed_step = 1.0f / 65536;    // that step, times n
+    static constexpr std::int32_t ulps = 256;            // elsewhere: this many units in the last place, times n
+};
+template <>
+struct OffsetConstants<double> {
+    static constexpr double origin = 1.0 / 32;
+    static constexpr double fixed_step = 0x1p-40;  // double's rounding is 2^29 times finer than float's ...
+    static constexpr std::int64_t ulps = 4096;     // ... and a larger margin in ulps still moves p by ~1e-12 of itself
+};
+
+// A ray ready to cast: where it starts and which t it accepts.
+struct SpawnedRay {
+    Ray ray;
+    Interval interval;
+};
+
+// The ray from surface point p in `direction` (any length), accepted up to t = max, leaving
+// on the side of the unit geometric normal n_side.
+inline SpawnedRay spawn_ray(const Vec3& p, const Vec3& n_side, const Vec3& direction, Real max, const Offset& o,
+                            Real time = 0) {
+    switch (o.method) {
+        case OffsetMethod::normal:
+            return {Ray{p + o.epsilon * n_side, direction, time}, Interval{0, max}};
+        case OffsetMethod::course:
+            return {Ray{p, direction, time}, Interval{o.epsilon, max}};
+        case OffsetMethod::robust:
+        default:
+            return {Ray{offset_origin(p, n_side), direction, time}, Interval{0, max}};
+    }
+}
+
+}  // namespace rt

@@ -1,0 +1,36 @@
+#include "core/transform.hpp"
+
+#include <cmath>
+#include <stdexcept>
+
+namespace rt {
+
+Affine Affine::rotate(const Vec3& axis, Real degrees) {
+    // Rodrigues' formula: R = cos I + sin [k]x + (1 - cos) k k^T, columns first (glm).
+    const Vec3 k = unit_vector(axis);
+    const Real a = glm::radians(degrees), c = std::cos(a), s = std::sin(a), C = 1 - c;
+    const Mat3 r(c + k.x * k.x * C, k.y * k.x * C + k.z * s, k.z * k.x * C - k.y * s,  // column 0
+                 k.x * k.y * C - k.z * s, c + k.y * k.y * C, k.z * k.y * C + k.x * s,  // column 1
+                 k.x * k.z * C + k.y * s, k.y * k.z * C - k.x * s, c + k.z * k.z * C);  // column 2
+    return Affine{r, Vec3(0)};
+}
+
+Affine inverse(const Affine& a, const std::string& what) {
+    // Scale-free test: the determinant against the product of the column lengths, which it
+    // equals for an orthogonal matrix and which bounds it always (Hadamard). A ratio under
+    // 1e-12 means one direction is squeezed a trillion times more than another.
+    const Real det = glm::determinant(a.m);
+    const Real bound = glm::length(a.m[0]) * glm::length(a.m[1]) * glm::length(a.m[2]);
+    if (!std::isfinite(det) || !(std::abs(det) > Real(1e-12) * bound))
+        throw std::invalid_argument(what + ": singular transform (it flattens space, so it has no inverse)");
+    Affine inv;
+    inv.m = glm::inverse(a.m);
+    inv.t = -(inv.m * a.t);
+    for (int c = 0; c < 3; ++c)
+        for (int r = 0; r < 3; ++r)
+            if (!std::isfinite(inv.m[c][r]))
+                throw std::invalid_argument(what + ": singular transform (its inverse is not finite)");
+    return inv;
+}
+
+}  // namespace rt

@@ -1,0 +1,13 @@
+#include "geometry/shape.hpp"
+
+namespace rt {
+
+std::size_t memory_bytes(const Shape& shape) {
+    if (const auto* mesh = std::get_if<Mesh>(&shape)) return sizeof(Shape) + memory_bytes(mesh->data());
+    if (const auto* polygon = std::get_if<Polygon>(&shape))
+        return sizeof(Shape) + polygon->vertices().size() * (sizeof(Vec3) + sizeof(Vec2));
+    if (const auto* instance = std::get_if<Instance>(&shape)) return sizeof(Shape) + memory_bytes(instance->base());
+    return sizeof(Shape);
+}
+
+}  // namespace rt

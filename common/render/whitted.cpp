@@ -1,0 +1,102 @@
+#include "render/whitted.hpp"
+
+#include "render/scene.hpp"
+#include "shading/optics.hpp"
+
+#include <algorithm>
+
+namespace rt {
+
+bool in_shadow(const Scene& scene, const SpawnedRay& s, int light, const Color& light_color, TraceContext& context) {
+    context.counters.count(RayKind::shadow);
+    const bool blocked = scene.occluded(s.ray, s.interval);
+    if (context.tree) {  // --pick: say what blocks it, which the any-hit query does not
+        TraceContext shadow = context.child(RayKind::shadow, s.interval, light_color, "light colour");
+        shadow.open(s.ray);
+        context.tree->nodes[std::size_t(shadow.node)].light = light;
+        HitRecord rec;
+        if (blocked && scene.hit(s.ray, s.interval, rec)) shadow.record_hit(rec);
+        context.tree->nodes[std::size_t(shadow.node)].hit = blocked;
+        shadow.close(blocked ? Color(0) : Color(1));
+    }
+    return blocked;
+}
+
+Color WhittedIntegrator::Li(const Scene& scene, const Ray& ray, TraceContext& context) const {
+    context.open(ray);
+    HitRecord rec;
+    if (!scene.hit(ray, context.interval, rec)) return context.close(scene.background);
+    context.record_hit(rec);
+    const Material& m = scene.material(rec.material);
+    // Shade the side the ray arrives on; which side that is, the geometric normal decides.
+    const bool front = glm::dot(rec.normal, ray.direction) < 0;
+    const ShadePoint sp{rec.p,
+                        front ? rec.normal : -rec.normal,
+                        front ? rec.shading_normal : -rec.shading_normal,
+                        -unit_vector(ray.direction),
+                        m.diffuse_at(rec.p),
+                        m};
+    Color c = sp.diffuse * scene.ambient;
+    for (std::size_t k = 0; k < scene.lights.size(); ++k) {
+        ++context.counters.light_terms;
+        c += direct_light(scene, scene.lights[k], int(k), sp, context);
+    }
+    if (m.is_dielectric() || m.has_mirror()) {
+        if (context.depth >= scene.max_depth) {
+            context.note("maximum depth reached: no further rays");
+        } else if (m.is_dielectric()) {
+            c += dielectric(scene, ray, rec, m, context);
+        } else {
+            // The mirror direction about the shading normal (smooth meshes reflect smoothly).
+            c += trace(scene, ray, rec, reflect(ray.direction, sp.n), RayKind::reflection, m.mirror, "mirror colour",
+                       context);
+        }
+    }
+    return context.close(c);
+}
+
+Color WhittedIntegrator::trace(const Scene& scene, const Ray& ray, const HitRecord& rec, const Vec3& direction,
+                               RayKind kind, const Color& weight, const char* why, TraceContext& context) const {
+    if (weight == Color(0)) return Color(0);
+    // Leave on the side the new ray goes to: outside for a reflection, inside for a refraction.
+    const Vec3 side = glm::dot(direction, rec.normal) >= 0 ? rec.normal : -rec.normal;
+    const SpawnedRay s = spawn_ray(rec.p, side, direction, kInfinity, scene.offset, ray.time);
+    context.counters.count(kind);
+    TraceContext child = context.child(kind, s.interval, weight, why);
+    return weight * Li(scene, s.ray, child);
+}
+
+Color WhittedIntegrator::dielectric(const Scene& scene, const Ray& ray, const HitRecord& rec, const Material& m,
+                                    TraceContext& context) const {
+    // Course §9.7: normals point out into the air, so d . n < 0 means the ray is entering.
+    const Vec3 d = unit_vector(ray.direction);
+    const Vec3 n = rec.shading_normal;
+    const Vec3 r = reflect(d, n);
+    const bool entering = glm::dot(d, rec.normal) < 0;
+    const Real ior = Real(m.ior);
+    Color k(1);  // Beer's law, for a ray that has travelled inside
+    Vec3 t;
+    bool transmitted;
+    if (entering) {
+        transmitted = refract(d, n, 1, ior, t);
+    } else {
+        // The ray's t measures in units of its direction's length (course §9.8's convention).
+        if (m.absorbs()) k = beer(m.attenuation, rec.t * glm::length(ray.direction));
+        transmitted = refract(d, -n, ior, 1, t);
+    }
+    const bool beer_applies = k != Color(1);
+    if (!transmitted) {
+        context.note("total internal reflection: no refracted ray");
+        return trace(scene, ray, rec, r, RayKind::reflection, k, beer_applies ? "Beer" : "total internal reflection",
+                     context);
+    }
+    // Schlick takes the cosine on the air side, which is the larger angle: the smaller cosine.
+    const Real cosine = std::min(std::abs(glm::dot(d, n)), std::abs(glm::dot(t, n)));
+    const Real R = schlick(cosine, ior);
+    const Color reflected = trace(scene, ray, rec, r, RayKind::reflection, k * float(R),
+                                  beer_applies ? "Beer x Schlick R" : "Schlick R", context);
+    return reflected + trace(scene, ray, rec, t, RayKind::refraction, k * float(1 - R),
+                             beer_applies ? "Beer x (1 - R)" : "1 - R", context);
+}
+
+}  // namespace rt

@@ -1,0 +1,28 @@
+#pragma once
+// The optics of perfect mirrors and dielectrics (book §7-8, course §9.6-9.7). All four are
+// exercises: reflect in chapter 07, the others in chapter 08.
+#include "core/real.hpp"
+
+namespace rt {
+
+// Exercise 7.1: the mirror direction of d about the unit normal n, r = d - 2 (d . n) n. As
+// in the course, d points towards the surface (it is a ray's direction) and r away from it;
+// r has d's length, and either side of n works.
+Vec3 reflect(const Vec3& d, const Vec3& n);
+
+// Exercise 8.1: Snell's law through the cosines (course §9.7). d is unit and points towards
+// the surface; n is the unit normal on the side d comes from (d . n <= 0); the ray passes
+// from index n_from into index n_to. True and `t` the unit transmitted direction, or false
+// on total internal reflection, when no ray is transmitted.
+bool refract(const Vec3& d, const Vec3& n, Real n_from, Real n_to, Vec3& t);
+
+// Exercise 8.2: Schlick's approximation of the Fresnel reflectance for a dielectric of index
+// `ior` in air, R0 + (1 - R0)(1 - cos)^5 with R0 = ((ior - 1)/(ior + 1))^2. `cosine` is the
+// cosine of the angle on the air side, whichever way the ray goes.
+Real schlick(Real cosine, Real ior);
+
+// Exercise 8.3: Beer's law: what remains of each channel after `distance` inside a medium
+// that leaves `attenuation` of it after one unit, attenuation^distance.
+Color beer(const Color& attenuation, Real distance);
+
+}  // namespace rt

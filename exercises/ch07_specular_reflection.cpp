@@ -1,0 +1,19 @@
+// STUDENT COPY of solutions/ch07_specular_reflection.cpp, made by tools/gen_exercises.cpp.
+// Write your code between each "@exercise" line and its "@end", in place of the throw.
+// Only those lines are yours: ./lab exercises keeps them and rewrites the rest.
+// Chapter 07 exercises: specular reflection (book §7, course §9.6). Declared in
+// common/shading/optics.hpp.
+#include "core/exercise.hpp"
+#include "shading/optics.hpp"
+
+namespace rt {
+
+// @book reflect
+Vec3 reflect(const Vec3& d, const Vec3& n) {
+    // @exercise 7.1 | reflect | book §7.1
+    throw NotImplemented("exercise 7.1 (reflect) is not done yet: see book §7.1");
+    // @end
+}
+// @book-end
+
+}  // namespace rt

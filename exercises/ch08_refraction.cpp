@@ -1,0 +1,37 @@
+// STUDENT COPY of solutions/ch08_refraction.cpp, made by tools/gen_exercises.cpp.
+// Write your code between each "@exercise" line and its "@end", in place of the throw.
+// Only those lines are yours: ./lab exercises keeps them and rewrites the rest.
+// Chapter 08 exercises: refraction (book §8, course §9.7). Declared in
+// common/shading/optics.hpp.
+#include "core/exercise.hpp"
+#include "shading/optics.hpp"
+
+#include <cmath>
+
+namespace rt {
+
+// @book refract
+bool refract(const Vec3& d, const Vec3& n, Real n_from, Real n_to, Vec3& t) {
+    // @exercise 8.1 | refract | book §8.1
+    throw NotImplemented("exercise 8.1 (refract) is not done yet: see book §8.1");
+    // @end
+}
+// @book-end
+
+// @book schlick
+Real schlick(Real cosine, Real ior) {
+    // @exercise 8.2 | schlick | book §8.2
+    throw NotImplemented("exercise 8.2 (schlick) is not done yet: see book §8.2");
+    // @end
+}
+// @book-end
+
+// @book beer
+Color beer(const Color& attenuation, Real distance) {
+    // @exercise 8.3 | beer | book §8.3
+    throw NotImplemented("exercise 8.3 (beer) is not done yet: see book §8.3");
+    // @end
+}
+// @book-end
+
+}  // namespace rt
