@@ -29,7 +29,8 @@ json to_json(const Vec3& v) {
     return json::array({v.x, v.y, v.z});
 }
 
-json to_json(const Color& c) {
+// Colours are float whatever Real is (and then the same type as Vec3): their own name.
+json color_json(const Color& c) {
     return json::array({c.r, c.g, c.b});
 }
 
@@ -60,9 +61,9 @@ json node_json(const Scene& scene, const RayTree& tree, const std::vector<std::v
     } else {
         j["hit"] = n.hit ? hit_json(scene, n.record) : json(nullptr);
     }
-    if (*n.weight_of) j["weight"] = {{"of", n.weight_of}, {"value", to_json(n.weight)}};
-    j["radiance"] = to_json(n.radiance);
-    if (*n.weight_of && n.kind != RayKind::shadow) j["contributes"] = to_json(n.weight * n.radiance);
+    if (*n.weight_of) j["weight"] = {{"of", n.weight_of}, {"value", color_json(n.weight)}};
+    j["radiance"] = color_json(n.radiance);
+    if (*n.weight_of && n.kind != RayKind::shadow) j["contributes"] = color_json(n.weight * n.radiance);
     if (*n.note) j["note"] = n.note;
     json kids = json::array();
     for (int c : children[std::size_t(i)]) kids.push_back(node_json(scene, tree, children, c));
@@ -87,7 +88,7 @@ json pick_json(const SceneEntry& entry, const Scene& scene, int x, int y, const 
             j["gamma"] = h.gamma;
         }
     }
-    j["color"] = to_json(p.color);
+    j["color"] = color_json(p.color);
     if (!p.tree.nodes.empty()) {
         std::vector<std::vector<int>> children(p.tree.nodes.size());
         int root = -1;

@@ -53,7 +53,9 @@ std::string rgb(const Color& c) {
 }
 
 std::string triple(const Color& c) {
-    return "(" + num(c.r) + ", " + num(c.g) + ", " + num(c.b) + ")";
+    char buf[96];
+    std::snprintf(buf, sizeof buf, "(%.4g, %.4g, %.4g)", double(c.r), double(c.g), double(c.b));
+    return buf;
 }
 
 // Convex hull (Andrew's monotone chain): the outline of a convex body's projected points.

@@ -26,10 +26,19 @@ Affine inverse(const Affine& a, const std::string& what) {
     Affine inv;
     inv.m = glm::inverse(a.m);
     inv.t = -(inv.m * a.t);
+    // Near-singular: the condition number (Frobenius norms, 3 for a rotation) past 10^6. Rays
+    // taken into such a space grow by as much, and a coordinate of 10^8 (limits.hpp) would
+    // leave float's range in the products of the ray tests.
+    Real norm = 0, inv_norm = 0;
     for (int c = 0; c < 3; ++c)
-        for (int r = 0; r < 3; ++r)
-            if (!std::isfinite(inv.m[c][r]))
-                throw std::invalid_argument(what + ": singular transform (its inverse is not finite)");
+        for (int r = 0; r < 3; ++r) {
+            norm += a.m[c][r] * a.m[c][r];
+            inv_norm += inv.m[c][r] * inv.m[c][r];
+        }
+    const Real condition = std::sqrt(norm) * std::sqrt(inv_norm);
+    if (!std::isfinite(condition) || condition > Real(3e6))
+        throw std::invalid_argument(what + ": nearly singular transform (it squeezes one direction over a million "
+                                           "times more than another)");
     return inv;
 }
 
