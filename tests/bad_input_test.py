@@ -164,6 +164,10 @@ scene("instance_shape_missing", {S: {"type": "instance"}}, "missing key 'shape'"
 scene("shapes_bad_entry", {"/shapes": {"a": {"type": "sphere", "center": [0, 0, 0], "radius": -1}}},
       "/shapes/a/radius", "length must be in")
 scene("smooth_sphere", {S + "/smooth": True}, S + "/smooth", "only meshes have vertex normals")
+scene("smooth_false_sphere", {S + "/smooth": False}, S + "/smooth", "only meshes have vertex normals")
+scene("mirror_black_on_dielectric", {M + "/ior": 1.5, M + "/mirror": [0, 0, 0]}, "a dielectric reflects by Schlick")
+scene("transform_moves_too_far", {S + "/radius": 1e7, S + "/transform": [{"scale": 100}]}, S + "/transform",
+      "coordinate must be in")
 scene("smooth_text", {S: {"type": "icosphere", "center": [0, 0, 0], "radius": 1, "smooth": "yes"}}, S + "/smooth",
       "must be true or false")
 scene("shading_unknown_lists_whitted", {"/shading": "raytrace"}, "unknown shading", "whitted")
@@ -432,10 +436,11 @@ cli("pick_text", ["--pick", "a,b"] + o, ["--pick"])
 cli("depth_negative", ["--depth", "-1"] + o, ["--depth"])
 cli("depth_past_limit", ["--depth", "65"] + o, ["--depth"])
 cli("depth_text", ["--depth", "deep"] + o, ["--depth", "whole number"])
+cli("svg_without_tree", ["--pick", "1,1", "--svg", out / "tree.svg"] + o, ["--svg", "whitted"])
 cli("svg_without_pick", ["--svg", out / "tree.svg"] + o, ["--svg", "needs --pick"])
 cli("svg_wrong_extension", ["--pick", "1,1", "--svg", out / "tree.png"] + o, ["--svg", "must end in .svg"])
-cli("svg_unwritable", ["--width", "8", "--height", "8", "--pick", "1,1", "--svg", "/proc/rtlab/t.svg"] + o,
-    ["cannot"], code=1)
+run("cli svg_unwritable", [bin_dir / "ch06", "--width", "8", "--height", "8", "--pick", "1,1", "--svg",
+                          "/proc/rtlab/t.svg"] + o, 1, ["cannot"])
 cli("output_unwritable", ["--width", "8", "--height", "8", "-o", "/proc/rtlab/x.png"], ["cannot"], code=1)
 
 # --- a scene file whose name is not UTF-8 --------------------------------------------------------

@@ -130,7 +130,8 @@ json stats_json(const std::string& chapter, const SceneEntry& entry, const Rende
         j["scene_skipped"] = {{"black_lights", s.lights_black},
                               {"unused_materials", s.materials_unused},
                               {"degenerate_triangles", s.degenerate_triangles},
-                              {"identity_transforms", s.identity_transforms}};
+                              {"identity_transforms", s.identity_transforms},
+                              {"unused_shapes", s.shapes_unused}};
         j["instancing"] = {{"instances", s.instances}, {"shared_bytes", s.shared_bytes}};
     }
     return j;
@@ -248,6 +249,9 @@ int ChapterApp::execute(const Invocation& inv) const {
         if (!inv.pick.empty()) {
             const Pick p = pick(scene, inv.options, inv.pick[0], inv.pick[1]);
             const std::string text = dump(pick_json(inv.scene, scene, inv.pick[0], inv.pick[1], p));
+            if (!inv.svg.empty() && p.tree.nodes.empty())
+                throw std::invalid_argument("--svg: scene '" + inv.scene.name +
+                                            "' is shaded without a ray tree; use \"shading\": \"whitted\"");
             if (!inv.svg.empty())
                 write_file_atomically(inv.svg, ray_tree_svg(scene, p.tree,
                                                             inv.scene.name + ", pixel " + std::to_string(inv.pick[0]) +

@@ -84,8 +84,9 @@ std::string polygon(const std::vector<P2>& pts, const char* style) {
 }
 
 // The outlines of one shape, seen through `to_world`.
-void draw_shape(const Shape& shape, const Affine& to_world, const PageProjection& proj, std::string& out) {
-    constexpr const char* kFill = "fill=\"#d9dde3\" fill-opacity=\"0.55\" stroke=\"#6b7280\" stroke-width=\"1\"";
+void draw_shape(const Shape& shape, const Affine& to_world, const PageProjection& proj, double unit, std::string& out) {
+    const std::string fill_style = "fill=\"#d9dde3\" fill-opacity=\"0.55\" stroke=\"#6b7280\" stroke-width=\"" + num(unit) + "\"";
+    const char* kFill = fill_style.c_str();
     constexpr std::size_t kMaxTriangles = 3000;  // past this, a mesh is drawn as the hull of its vertices
     if (const auto* s = std::get_if<Sphere>(&shape)) {
         std::vector<P2> pts;  // the silhouette of a (transformed) sphere: the hull of points on it
@@ -110,7 +111,7 @@ void draw_shape(const Shape& shape, const Affine& to_world, const PageProjection
             out += polygon(hull(pts), kFill);
             return;
         }
-        out += "<path fill=\"#d9dde3\" fill-opacity=\"0.25\" stroke=\"#9ca3af\" stroke-width=\"0.5\" d=\"";
+        out += "<path fill=\"#d9dde3\" fill-opacity=\"0.25\" stroke=\"#9ca3af\" stroke-width=\"" + num(0.5 * unit) + "\" d=\"";
         for (const auto& tri : d.triangles) {
             const P2 a = proj(to_world.point(d.positions[tri[0]])), b = proj(to_world.point(d.positions[tri[1]])),
                      c = proj(to_world.point(d.positions[tri[2]]));
@@ -119,7 +120,7 @@ void draw_shape(const Shape& shape, const Affine& to_world, const PageProjection
         }
         out += "\"/>\n";
     } else if (const auto* in = std::get_if<Instance>(&shape)) {
-        draw_shape(in->base(), in->to_world().then(to_world), proj, out);
+        draw_shape(in->base(), in->to_world().then(to_world), proj, unit, out);
     }
 }
 
@@ -168,6 +169,11 @@ std::string ray_tree_svg(const Scene& scene, const RayTree& tree, const std::str
     const double pad = 0.25 * size;
     lo = {lo.x - pad, lo.y - pad};
     hi = {hi.x + pad, hi.y + pad};
+    // No narrower than 4:5, so that the header fits.
+    if (const double short_by = 0.8 * (hi.y - lo.y) - (hi.x - lo.x); short_by > 0) {
+        lo.x -= short_by / 2;
+        hi.x += short_by / 2;
+    }
     const double w = hi.x - lo.x, h = hi.y - lo.y;
     const double unit = std::max(w, h) / 600;  // one pixel of a 600-pixel picture, in scene units
     const auto escape_end = [&](const Ray& r) { return r.origin + Real(0.6 * std::max(w, h)) * unit_vector(r.direction); };
@@ -194,9 +200,7 @@ std::string ray_tree_svg(const Scene& scene, const RayTree& tree, const std::str
         lx += 80 * unit;
     }
 
-    out += "<g vector-effect=\"non-scaling-stroke\">\n";
-    for (const Surface& s : scene.surfaces.surfaces()) draw_shape(s.shape, Affine{}, proj, out);
-    out += "</g>\n";
+    for (const Surface& s : scene.surfaces.surfaces()) draw_shape(s.shape, Affine{}, proj, unit, out);
     // Point lights as suns; directional lights as an arrow at the top.
     for (std::size_t k = 0; k < scene.lights.size(); ++k) {
         const Light& l = scene.lights[k];
@@ -207,9 +211,19 @@ std::string ray_tree_svg(const Scene& scene, const RayTree& tree, const std::str
                    std::to_string(k) + ", colour " + triple(l.color) + "</title></circle>\n";
         }
     }
+    // How much of each ray reaches the pixel: the product of the weights on the way there.
+    // Rays that matter little fade, and only rays that matter are labelled.
+    std::vector<double> reach(tree.nodes.size(), 1.0);
+    for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
+        const RayNode& n = tree.nodes[i];
+        const double own = n.kind == RayKind::shadow ? 1.0 : (n.weight.r + n.weight.g + n.weight.b) / 3.0;
+        reach[i] = (n.parent >= 0 ? reach[std::size_t(n.parent)] : 1.0) * own;
+    }
     // The rays, parents first so that children draw on top.
     for (std::size_t i = 0; i < tree.nodes.size(); ++i) {
         const RayNode& n = tree.nodes[i];
+        const double opacity = 0.15 + 0.85 * std::sqrt(std::clamp(reach[i], 0.0, 1.0));
+        const bool label = reach[i] >= 0.05;
         const Vec3 end = n.hit ? n.record.p
                          : n.kind == RayKind::shadow && std::isfinite(double(n.interval.max))
                              ? n.ray.at(n.interval.max)
@@ -226,12 +240,13 @@ std::string ray_tree_svg(const Scene& scene, const RayTree& tree, const std::str
             tip += ", hits nothing: background";
         if (*n.weight_of) tip += "\nweight (" + std::string(n.weight_of) + "): " + triple(n.weight);
         tip += "\nbrings back " + triple(n.radiance);
+        tip += "\nshare of the pixel it carries: " + num(reach[i]);
         if (*n.note) tip += "\n" + std::string(n.note);
         out += "<line x1=\"" + num(a.x) + "\" y1=\"" + num(a.y) + "\" x2=\"" + num(b.x) + "\" y2=\"" + num(b.y) +
                "\" stroke=\"" + (blocked_shadow ? std::string("#dc2626") : kind_color(n.kind)) + "\" stroke-width=\"" +
                num(width) + "\"" +
                (n.kind == RayKind::shadow ? " stroke-dasharray=\"" + num(5 * unit) + "," + num(3 * unit) + "\"" : "") +
-               (n.hit || n.kind == RayKind::shadow ? "" : " stroke-opacity=\"0.6\"") + "><title>" + escape(tip) +
+               " stroke-opacity=\"" + num(opacity) + "\"><title>" + escape(tip) +
                "</title></line>\n";
         if (n.hit) {
             const char* fill = blocked_shadow ? "#dc2626" : "#111827";
@@ -239,13 +254,13 @@ std::string ray_tree_svg(const Scene& scene, const RayTree& tree, const std::str
                    fill + "\"><title>" + escape(tip) + "</title></circle>\n";
         }
         // Label the weight where it is not 1: how much of this ray reaches its parent.
-        if (*n.weight_of && n.kind != RayKind::shadow) {
+        if (label && *n.weight_of && n.kind != RayKind::shadow) {
             const double mx = (a.x + b.x) / 2, my = (a.y + b.y) / 2;
             const float g = (n.weight.r + n.weight.g + n.weight.b) / 3;
             out += "<text x=\"" + num(mx + 4 * unit) + "\" y=\"" + num(my) + "\" font-size=\"" + num(9 * unit) +
                    "\" fill=\"" + kind_color(n.kind) + "\">×" + num(g) + " " + escape(n.weight_of) + "</text>\n";
         }
-        if (blocked_shadow)
+        if (blocked_shadow && label)
             out += "<text x=\"" + num(b.x + 4 * unit) + "\" y=\"" + num(b.y - 4 * unit) + "\" font-size=\"" +
                    num(9 * unit) + "\" fill=\"#dc2626\">blocked</text>\n";
     }

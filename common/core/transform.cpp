@@ -16,13 +16,14 @@ Affine Affine::rotate(const Vec3& axis, Real degrees) {
 }
 
 Affine inverse(const Affine& a, const std::string& what) {
+    const std::string prefix = what.empty() ? "" : what + ": ";
     // Scale-free test: the determinant against the product of the column lengths, which it
     // equals for an orthogonal matrix and which bounds it always (Hadamard). A ratio under
     // 1e-12 means one direction is squeezed a trillion times more than another.
     const Real det = glm::determinant(a.m);
     const Real bound = glm::length(a.m[0]) * glm::length(a.m[1]) * glm::length(a.m[2]);
     if (!std::isfinite(det) || !(std::abs(det) > Real(1e-12) * bound))
-        throw std::invalid_argument(what + ": singular transform (it flattens space, so it has no inverse)");
+        throw std::invalid_argument(prefix + "singular transform (it flattens space, so it has no inverse)");
     Affine inv;
     inv.m = glm::inverse(a.m);
     inv.t = -(inv.m * a.t);
@@ -37,7 +38,7 @@ Affine inverse(const Affine& a, const std::string& what) {
         }
     const Real condition = std::sqrt(norm) * std::sqrt(inv_norm);
     if (!std::isfinite(condition) || condition > Real(3e6))
-        throw std::invalid_argument(what + ": nearly singular transform (it squeezes one direction over a million "
+        throw std::invalid_argument(prefix + "nearly singular transform (it squeezes one direction over a million "
                                            "times more than another)");
     return inv;
 }

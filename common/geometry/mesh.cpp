@@ -97,6 +97,14 @@ HitRecord record(const Mesh& mesh, const Ray&, const MeshHit& h, SurfaceRef who)
     return rec;
 }
 
+Mesh Mesh::smoothed() const {
+    MeshData data = *data_;
+    compute_vertex_normals(data);
+    Mesh result(std::move(data));
+    result.dropped_ = dropped_;  // what this mesh dropped when it was made
+    return result;
+}
+
 void compute_vertex_normals(MeshData& mesh) {
     mesh.normals.assign(mesh.positions.size(), Vec3(0));
     for (const auto& t : mesh.triangles) {

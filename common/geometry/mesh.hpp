@@ -50,6 +50,8 @@ public:
 
     const MeshData& data() const { return *data_; }
     bool smooth() const { return !data_->normal_triangles.empty(); }
+    // The same mesh with vertex normals computed (compute_vertex_normals): shaded smoothly.
+    Mesh smoothed() const;
     std::size_t dropped_degenerate() const { return dropped_; }
     const Box& box() const { return box_; }
 

@@ -66,12 +66,10 @@ Shape read_shape(const Fields& f, std::vector<const char*> common) {
         f.only(common);
         try {
             Shape shape = t.read(f);
-            if (f.flag("smooth", false)) {
+            if (f.has("smooth")) {
                 const Mesh* mesh = std::get_if<Mesh>(&shape);
                 if (!mesh) f.fail("smooth", "only meshes have vertex normals; a " + type + " is shaded by its own normal");
-                MeshData data = mesh->data();
-                compute_vertex_normals(data);
-                shape = Mesh(std::move(data));
+                if (f.flag("smooth", false)) shape = mesh->smoothed();
             }
             return shape;
         } catch (const std::invalid_argument& e) {  // degenerate geometry, a limit passed
@@ -181,25 +179,36 @@ Scene load_scene_text(const std::string& text, const std::string& filename, cons
     for (std::size_t i = 0; i < ss.size(); ++i) {
         const Fields f(reader, ss[i], "/surfaces/" + std::to_string(i));
         std::shared_ptr<const Shape> base;
+        bool reused = false;  // a named shape used before
         if (f.text("type") == "instance") {
             f.only({"type", "name", "material", "shape", "transform"});
             const std::string name = f.text("shape");
             const auto it = shapes.find(name);
             if (it == shapes.end()) f.fail("shape", "no shape named \"" + name + "\" in /shapes");
             base = it->second;
-            if (shape_uses[name]++ > 0) summary.shared_bytes += memory_bytes(*base);
+            reused = shape_uses[name]++ > 0;
         } else {
             base = std::make_shared<const Shape>(read_shape(f, {"name", "material", "transform"}));
         }
         const Affine to_world = f.has("transform") ? read_transform(f, "transform") : Affine{};
-        Shape shape = *base;  // a mesh's copy shares its triangles
+        Shape shape = *base;  // a mesh's copy shares its triangles; other shapes are copied
         if (!to_world.is_identity()) {
             shape = Instance(base, to_world);  // read_transform has refused a singular one
             ++summary.instances;
+            // The transformed shape must stay where coordinates may be (limits.hpp), as the
+            // shapes of the file do.
+            const Box box = bounding_box(shape);
+            for (const Vec3& corner : {box.min, box.max})
+                for (int k = 0; k < 3; ++k)
+                    if (!limits::contains(limits::coordinate, double(corner[k])))
+                        f.fail("transform", "moves the shape to " + limits::refuse(limits::coordinate, double(corner[k])));
         } else if (f.has("transform")) {
             ++summary.identity_transforms;  // costs nothing per ray: the shape is used as it is
         }
-        count_triangles(*base, summary);
+        // Saved memory: a reused shape that is not copied (an instance, or a mesh's shared data).
+        if (reused && (std::holds_alternative<Instance>(shape) || std::holds_alternative<Mesh>(shape)))
+            summary.shared_bytes += memory_bytes(*base);
+        if (!reused) count_triangles(*base, summary);  // stored once, counted once
         MaterialId material = 0;
         if (f.has("material")) {
             const std::string name = f.text("material");
@@ -214,6 +223,7 @@ Scene load_scene_text(const std::string& text, const std::string& filename, cons
     summary.surfaces = int(ss.size());
     summary.materials = int(used.size());
     summary.materials_unused = int(materials.size() - used.size());
+    summary.shapes_unused = int(shapes.size() - shape_uses.size());
     if (summary_out) *summary_out = summary;
     return scene;
 }

@@ -19,6 +19,7 @@ struct SceneSummary {
     std::uint64_t degenerate_triangles = 0;  // zero-area mesh triangles: dropped
     int instances = 0;                       // surfaces that see a shape through a transform
     int identity_transforms = 0;             // transforms that do nothing: no instance made
+    int shapes_unused = 0;                   // in /shapes but named by no instance
     // What instancing saved: the bytes of the shapes that instances (and named shapes used
     // more than once) share instead of holding copies.
     std::uint64_t shared_bytes = 0;

@@ -6,6 +6,8 @@
 #include "core/sampler.hpp"
 #include "render/ray_tree.hpp"
 
+#include <algorithm>
+
 namespace rt {
 
 struct Scene;
@@ -24,10 +26,12 @@ struct TraceContext {
     int node = -1;                   // this ray's node, once open()ed
     Color weight{1};                 // for the tree: the factor this ray's colour will get
     const char* weight_of = "";
+    float reach = 1;                 // the product of the weights from the pixel down to this ray
 
     // The context of a ray this one casts.
     TraceContext child(RayKind k, Interval iv, const Color& w, const char* why) const {
-        return TraceContext{sampler, counters, depth + 1, k, iv, tree, node, -1, w, why};
+        const float share = std::max(w.r, std::max(w.g, w.b));
+        return TraceContext{sampler, counters, depth + 1, k, iv, tree, node, -1, w, why, reach * share};
     }
 
     // Tree bookkeeping; each does nothing unless a tree is being recorded.

@@ -28,6 +28,10 @@ struct Scene {
     // how secondary rays leave a surface (chapter 06).
     int max_depth = 5;
     Offset offset;
+    // A secondary ray that would carry less than this share of its pixel is not cast. Each
+    // glass hit splits a ray in two whose weights add up to at most its own, so this bounds
+    // a camera ray's tree to about 2 / min_reach rays, whatever max_depth allows (book §8.4).
+    float min_reach = 1.0f / 1024;
 
     MaterialId add_material(const Material& m) {
         materials.push_back(m);

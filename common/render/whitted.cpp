@@ -57,7 +57,8 @@ Color WhittedIntegrator::Li(const Scene& scene, const Ray& ray, TraceContext& co
 
 Color WhittedIntegrator::trace(const Scene& scene, const Ray& ray, const HitRecord& rec, const Vec3& direction,
                                RayKind kind, const Color& weight, const char* why, TraceContext& context) const {
-    if (weight == Color(0)) return Color(0);
+    const float share = std::max(weight.r, std::max(weight.g, weight.b));
+    if (!(share > 0) || context.reach * share < scene.min_reach) return Color(0);
     // Leave on the side the new ray goes to: outside for a reflection, inside for a refraction.
     const Vec3 side = glm::dot(direction, rec.normal) >= 0 ? rec.normal : -rec.normal;
     const SpawnedRay s = spawn_ray(rec.p, side, direction, kInfinity, scene.offset, ray.time);
@@ -70,9 +71,11 @@ Color WhittedIntegrator::dielectric(const Scene& scene, const Ray& ray, const Hi
                                     TraceContext& context) const {
     // Course §9.7: normals point out into the air, so d . n < 0 means the ray is entering.
     const Vec3 d = unit_vector(ray.direction);
-    const Vec3 n = rec.shading_normal;
-    const Vec3 r = reflect(d, n);
     const bool entering = glm::dot(d, rec.normal) < 0;
+    // Refract about the shading normal unless it disagrees with the geometric one about
+    // which side the ray is on (near a smooth mesh's silhouette): then the geometric one.
+    const Vec3 n = (glm::dot(d, rec.shading_normal) < 0) == entering ? rec.shading_normal : rec.normal;
+    const Vec3 r = reflect(d, n);
     const Real ior = Real(m.ior);
     Color k(1);  // Beer's law, for a ray that has travelled inside
     Vec3 t;

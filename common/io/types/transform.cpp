@@ -26,7 +26,7 @@ Affine read_transform(const Fields& f, const char* key) {
         a = a.then(s);
     }
     try {
-        (void)inverse(a);
+        (void)inverse(a, "");  // the message names the key already
     } catch (const std::invalid_argument& e) {
         f.fail(key, e.what());
     }
