@@ -7,8 +7,8 @@
 //   build/release/bin/bench_acne            (Real=double)
 //   build/float/bin/bench_acne              (Real=float)
 //   bench_acne --images DIR                 also writes DIR/acne-REAL-METHOD.png at 10^5
-#include "io/image_file.hpp"
 #include "render/acne.hpp"
+#include "io/image_file.hpp"
 #include "render/render.hpp"
 
 #include <cmath>
@@ -26,13 +26,14 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "usage: bench_acne [--images DIR]\n");
         return 2;
     }
-    const Offset methods[] = {{OffsetMethod::normal, Real(1e-4)}, {OffsetMethod::course, Real(1e-4)},
-                              {OffsetMethod::robust, Real(1e-4)}};
+    const Offset methods[] = {
+        {OffsetMethod::normal, Real(1e-4)}, {OffsetMethod::course, Real(1e-4)}, {OffsetMethod::robust, Real(1e-4)}};
     const int width = 320, height = 240;
     std::printf("Real=%s, %dx%d pixels, epsilon = 1e-4 for the normal and course methods\n\n", real_name(), width,
                 height);
-    std::printf("| distance | lit pixels | normal: acne | normal: leaks | course: acne | course: leaks | robust: acne "
-                "| robust: leaks |\n|---|---|---|---|---|---|---|---|\n");
+    std::printf(
+        "| distance | lit pixels | normal: acne | normal: leaks | course: acne | course: leaks | robust: acne "
+        "| robust: leaks |\n|---|---|---|---|---|---|---|---|\n");
     for (int e = 0; e <= 5; ++e) {
         const Real scale = Real(std::pow(10.0, e));
         std::printf("| 10^%d |", e);
@@ -52,8 +53,7 @@ int main(int argc, char** argv) {
         o.height = 300;
         for (const Offset& m : methods) {
             const RenderResult r = render(acne_scene(Real(1e5), m), o);
-            const std::string path =
-                images + "/acne-" + real_name() + "-" + kOffsetMethodNames[int(m.method)] + ".png";
+            const std::string path = images + "/acne-" + real_name() + "-" + kOffsetMethodNames[int(m.method)] + ".png";
             write_image(r.image, path);
             std::printf("wrote %s\n", path.c_str());
         }

@@ -1,5 +1,6 @@
 // Chapter 07: specular reflection (course §9.6): the mirror direction, the mirror series
 // k^n between parallel mirrors, convergence with depth, rays counted by kind, the ray tree.
+#include "app/ray_tree_svg.hpp"
 #include "io/scene_file.hpp"
 #include "render/integrators.hpp"
 #include "render/render.hpp"
@@ -45,7 +46,7 @@ TEST_SUITE("ch07") {
 TEST_CASE("7.1 reflect: r = d - 2 (d . n) n, with the course's signs") {
     CHECK(reflect(Vec3(1, -1, 0), Vec3(0, 1, 0)) == Vec3(1, 1, 0));
     CHECK(reflect(Vec3(1, -1, 0), Vec3(0, -1, 0)) == Vec3(1, 1, 0));  // either side of the surface
-    CHECK(reflect(Vec3(0, 0, -2), Vec3(0, 0, 1)) == Vec3(0, 0, 2));    // straight back, length kept
+    CHECK(reflect(Vec3(0, 0, -2), Vec3(0, 0, 1)) == Vec3(0, 0, 2));   // straight back, length kept
     pcg32 rng(7);
     std::uniform_real_distribution<double> u(-1, 1);
     int failures = 0;
@@ -141,4 +142,23 @@ TEST_CASE("7.1 the ray tree of a mirror pixel: camera ray, its shadow rays, the 
     CHECK(tree.nodes[2].radiance == Color(1));
     CHECK(tree.nodes[2].depth == 2);
 }
+}
+
+TEST_CASE("7.1 the ray tree draws as SVG: one line per ray, the blocked shadow rays in red") {
+    Scene scene = parallel_mirrors(0.5f, 10, 8);
+    Light light;
+    light.position = Vec3(0, 3, -3);
+    scene.lights.push_back(light);
+    scene.materials[1].diffuse = Color(0.3f);  // so that the mirrors cast shadow rays
+    RayCounters counters;
+    RayTree tree;
+    const Color c = trace(scene, Ray{Vec3(0), Vec3(1, 0, Real(-2.5))}, counters, &tree);
+    const std::string svg = ray_tree_svg(scene, tree, "two mirrors", c);
+    CHECK(svg.rfind("<svg", 0) == 0);
+    std::size_t lines = 0;
+    for (std::size_t at = svg.find("<line"); at != std::string::npos; at = svg.find("<line", at + 1)) ++lines;
+    CHECK(lines == tree.nodes.size());
+    CHECK(tree.nodes.size() == 5);  // camera, 2 reflections, a shadow ray from each mirror hit
+    CHECK(svg.find("two mirrors") != std::string::npos);
+    CHECK(svg.find("mirror colour") != std::string::npos);
 }

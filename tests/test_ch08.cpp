@@ -36,9 +36,9 @@ TEST_CASE("8.1 refract: worked values and Snell's law on random rays") {
             continue;
         }
         const Real sin_i = std::sqrt(d.x * d.x + d.y * d.y), sin_t = std::sqrt(t.x * t.x + t.y * t.y);
-        RT_CHECK_FIRST(failures, std::abs(n1 * sin_i - n2 * sin_t) <= 1e3 * test::kEps);  // Snell
-        RT_CHECK_FIRST(failures, std::abs(glm::length(t) - 1) <= 1e2 * test::kEps);     // unit
-        RT_CHECK_FIRST(failures, t.z < 0);                                               // through
+        RT_CHECK_FIRST(failures, std::abs(n1 * sin_i - n2 * sin_t) <= 1e3 * test::kEps);        // Snell
+        RT_CHECK_FIRST(failures, std::abs(glm::length(t) - 1) <= 1e2 * test::kEps);             // unit
+        RT_CHECK_FIRST(failures, t.z < 0);                                                      // through
         RT_CHECK_FIRST(failures, std::abs(glm::dot(glm::cross(d, n), t)) <= 1e2 * test::kEps);  // in d and n's plane
     }
     CHECK(failures == 0);

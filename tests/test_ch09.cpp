@@ -120,9 +120,9 @@ TEST_CASE("9.1 instances hit where the explicitly transformed mesh does: t, poin
     const Affine cases[] = {
         course_ellipse(),
         Affine::rotate(Vec3(1, 2, 3), 70).then(Affine::translate(Vec3(-3, 1, 2))),
-        Affine::scale(Vec3(-1, 1, 1)).then(Affine::translate(Vec3(0, 2, 0))),             // a mirror image
-        Affine::scale(Vec3(1.5, -0.5, 2)).then(Affine::rotate(Vec3(0, 1, 0), 30)),        // another
-        Affine::scale(Vec3(1, 1e-4, 1)).then(Affine::rotate(Vec3(1, 0, 1), 20)),          // nearly flat
+        Affine::scale(Vec3(-1, 1, 1)).then(Affine::translate(Vec3(0, 2, 0))),       // a mirror image
+        Affine::scale(Vec3(1.5, -0.5, 2)).then(Affine::rotate(Vec3(0, 1, 0), 30)),  // another
+        Affine::scale(Vec3(1, 1e-4, 1)).then(Affine::rotate(Vec3(1, 0, 1), 20)),    // nearly flat
     };
     pcg32 rng(99);
     std::uniform_real_distribution<double> u(-1, 1);
@@ -134,7 +134,8 @@ TEST_CASE("9.1 instances hit where the explicitly transformed mesh does: t, poin
         const Vec3 mid = (box.min + box.max) / Real(2), half = (box.max - box.min) / Real(2) + Vec3(Real(0.01));
         int both = 0, disagree = 0, failures = 0;
         for (int k = 0; k < 4000; ++k) {
-            const Vec3 origin = mid + Real(3) * glm::length(half) * unit_vector(Vec3{Real(u(rng)), Real(u(rng)), Real(u(rng))});
+            const Vec3 origin =
+                mid + Real(3) * glm::length(half) * unit_vector(Vec3{Real(u(rng)), Real(u(rng)), Real(u(rng))});
             const Vec3 target = mid + half * Vec3{Real(u(rng)), Real(u(rng)), Real(u(rng))} * Real(0.9);
             const Ray ray{origin, target - origin};
             HitRecord a, b;
@@ -149,8 +150,7 @@ TEST_CASE("9.1 instances hit where the explicitly transformed mesh does: t, poin
             const Real scale = glm::length(ray.direction);
             RT_CHECK_FIRST(failures, std::abs(a.t - b.t) * scale <= 1e3 * test::kEps * glm::length(origin));
             RT_CHECK_FIRST(failures, glm::length(a.p - b.p) <= 1e3 * test::kEps * glm::length(origin));
-            if (a.primitive == b.primitive)
-                RT_CHECK_FIRST(failures, glm::dot(a.normal, b.normal) >= 1 - Real(1e-3));
+            if (a.primitive == b.primitive) RT_CHECK_FIRST(failures, glm::dot(a.normal, b.normal) >= 1 - Real(1e-3));
         }
         CHECK(both > 2000);
         CHECK(disagree <= 4);

@@ -2,11 +2,16 @@
 #include "geometry/mesh.hpp"
 #include "geometry/polygon.hpp"
 #include "geometry/procedural.hpp"
+#include "geometry/shape.hpp"
 #include "geometry/triangle.hpp"
+#include "io/obj.hpp"
 #include "support.hpp"
+
+#include <pcg_random.hpp>
 
 #include <cmath>
 #include <map>
+#include <random>
 
 using namespace rt;
 
@@ -65,3 +70,52 @@ TEST_CASE("degenerate polygons are rejected with a clear error") {
                          doctest::Contains("vertex 0 is off the plane"), std::invalid_argument);
 }
 }  // TEST_SUITE("common")
+
+TEST_CASE("smooth meshes: interpolated vertex normals, the geometric normal kept for offsets") {
+    // An icosphere's computed vertex normals interpolate to within a few degrees of the true
+    // sphere normal, where its flat facets are off by up to half a facet's angle.
+    const Vec3 c(0.5, -1, 2);
+    const Mesh flat(icosphere(c, 2, 2));
+    const Mesh smooth = flat.smoothed();
+    CHECK(smooth.smooth());
+    CHECK_FALSE(flat.smooth());
+    CHECK(smooth.data().triangles.size() == flat.data().triangles.size());
+    pcg32 rng(5);
+    std::uniform_real_distribution<double> u(-1, 1);
+    double worst_flat = 1, worst_smooth = 1;
+    for (int k = 0; k < 2000; ++k) {
+        const Vec3 target = c + Real(1.5) * Vec3{Real(u(rng)), Real(u(rng)), Real(u(rng))};
+        const Ray ray{c + Vec3(0, 0, 10), target - (c + Vec3(0, 0, 10))};
+        HitRecord a, b;
+        const bool ha = hit_record(flat, ray, Interval{}, SurfaceRef{}, a);
+        REQUIRE(ha == hit_record(smooth, ray, Interval{}, SurfaceRef{}, b));
+        if (!ha) continue;
+        const Vec3 truth = unit_vector(b.p - c);
+        CHECK(a.shading_normal == a.normal);  // flat: shading is geometric
+        CHECK(b.normal == a.normal);          // the geometric normal is unchanged
+        worst_flat = std::min(worst_flat, double(glm::dot(a.normal, truth)));
+        worst_smooth = std::min(worst_smooth, double(glm::dot(b.shading_normal, truth)));
+    }
+    CHECK(worst_smooth > 0.9995);  // within 2 degrees
+    CHECK(worst_flat < 0.995);     // facets are off by more than 5 degrees
+}
+
+TEST_CASE("OBJ vertex normals are used when every corner has one, dropped otherwise") {
+    const std::string obj = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn 1 0 1\nvn 0 1 1\nf 1//1 2//2 3//3\n";
+    const MeshData with = load_obj_text(obj, "n.obj");
+    REQUIRE(with.normals.size() == 3);
+    REQUIRE(with.normal_triangles.size() == 1);
+    const Mesh mesh(with);
+    CHECK(mesh.smooth());
+    HitRecord rec;
+    // At the triangle's centroid the interpolated normal is the mean of the three.
+    REQUIRE(hit_record(mesh, Ray{Vec3(Real(1) / 3, Real(1) / 3, 1), Vec3(0, 0, -1)}, Interval{}, SurfaceRef{}, rec));
+    // The file's normals as given (not unit): their mean (1, 1, 3)/3, made unit.
+    const Vec3 want = unit_vector(Vec3(1, 1, 3));
+    CHECK(rec.shading_normal.x == doctest::Approx(want.x));
+    CHECK(rec.shading_normal.z == doctest::Approx(want.z));
+    CHECK(rec.normal == Vec3(0, 0, 1));
+    const MeshData some = load_obj_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nf 1//1 2 3\n", "some.obj");
+    CHECK(some.normals.empty());
+    CHECK_FALSE(Mesh(some).smooth());
+}

@@ -187,7 +187,8 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
         ->delimiter(',')
         ->expected(2);
     cli.add_option("--svg", inv.svg, "with --pick: also draw the pixel's ray tree into FILE.svg");
-    cli.add_option("--depth", inv.max_depth, "maximum recursion depth of reflection and refraction (default: the scene's)")
+    cli.add_option("--depth", inv.max_depth,
+                   "maximum recursion depth of reflection and refraction (default: the scene's)")
         ->check(whole)
         ->check(range(limits::recursion_depth));
     cli.add_flag("--stats", inv.stats, "print render statistics as one JSON line");

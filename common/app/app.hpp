@@ -43,8 +43,8 @@ public:
         RenderOptions options;
         SceneEntry scene;
         std::string output;
-        std::vector<int> pick;  // empty, or X and Y
-        std::string svg;        // with pick: draw the ray tree into this file
+        std::vector<int> pick;         // empty, or X and Y
+        std::string svg;               // with pick: draw the ray tree into this file
         std::optional<int> max_depth;  // --depth: overrides the scene's
         bool stats = false;
     };

@@ -85,7 +85,8 @@ std::string polygon(const std::vector<P2>& pts, const char* style) {
 
 // The outlines of one shape, seen through `to_world`.
 void draw_shape(const Shape& shape, const Affine& to_world, const PageProjection& proj, double unit, std::string& out) {
-    const std::string fill_style = "fill=\"#d9dde3\" fill-opacity=\"0.55\" stroke=\"#6b7280\" stroke-width=\"" + num(unit) + "\"";
+    const std::string fill_style =
+        "fill=\"#d9dde3\" fill-opacity=\"0.55\" stroke=\"#6b7280\" stroke-width=\"" + num(unit) + "\"";
     const char* kFill = fill_style.c_str();
     constexpr std::size_t kMaxTriangles = 3000;  // past this, a mesh is drawn as the hull of its vertices
     if (const auto* s = std::get_if<Sphere>(&shape)) {
@@ -111,12 +112,13 @@ void draw_shape(const Shape& shape, const Affine& to_world, const PageProjection
             out += polygon(hull(pts), kFill);
             return;
         }
-        out += "<path fill=\"#d9dde3\" fill-opacity=\"0.25\" stroke=\"#9ca3af\" stroke-width=\"" + num(0.5 * unit) + "\" d=\"";
+        out += "<path fill=\"#d9dde3\" fill-opacity=\"0.25\" stroke=\"#9ca3af\" stroke-width=\"" + num(0.5 * unit) +
+               "\" d=\"";
         for (const auto& tri : d.triangles) {
             const P2 a = proj(to_world.point(d.positions[tri[0]])), b = proj(to_world.point(d.positions[tri[1]])),
                      c = proj(to_world.point(d.positions[tri[2]]));
-            out += "M" + num(a.x) + "," + num(a.y) + "L" + num(b.x) + "," + num(b.y) + "L" + num(c.x) + "," +
-                   num(c.y) + "Z";
+            out += "M" + num(a.x) + "," + num(a.y) + "L" + num(b.x) + "," + num(b.y) + "L" + num(c.x) + "," + num(c.y) +
+                   "Z";
         }
         out += "\"/>\n";
     } else if (const auto* in = std::get_if<Instance>(&shape)) {
@@ -176,7 +178,9 @@ std::string ray_tree_svg(const Scene& scene, const RayTree& tree, const std::str
     }
     const double w = hi.x - lo.x, h = hi.y - lo.y;
     const double unit = std::max(w, h) / 600;  // one pixel of a 600-pixel picture, in scene units
-    const auto escape_end = [&](const Ray& r) { return r.origin + Real(0.6 * std::max(w, h)) * unit_vector(r.direction); };
+    const auto escape_end = [&](const Ray& r) {
+        return r.origin + Real(0.6 * std::max(w, h)) * unit_vector(r.direction);
+    };
 
     std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" + num(lo.x) + " " + num(lo.y - 0.12 * h) +
                       " " + num(w) + " " + num(h * 1.12) + "\" width=\"" + num(600 * w / std::max(w, h)) +
@@ -224,10 +228,9 @@ std::string ray_tree_svg(const Scene& scene, const RayTree& tree, const std::str
         const RayNode& n = tree.nodes[i];
         const double opacity = 0.15 + 0.85 * std::sqrt(std::clamp(reach[i], 0.0, 1.0));
         const bool label = reach[i] >= 0.05;
-        const Vec3 end = n.hit ? n.record.p
-                         : n.kind == RayKind::shadow && std::isfinite(double(n.interval.max))
-                             ? n.ray.at(n.interval.max)
-                             : escape_end(n.ray);
+        const Vec3 end = n.hit                                                                ? n.record.p
+                         : n.kind == RayKind::shadow && std::isfinite(double(n.interval.max)) ? n.ray.at(n.interval.max)
+                                                                                              : escape_end(n.ray);
         const P2 a = proj(n.ray.origin), b = proj(end);
         const bool blocked_shadow = n.kind == RayKind::shadow && n.hit;
         const double width = (n.kind == RayKind::camera ? 2.2 : 1.6) * unit;
@@ -246,8 +249,7 @@ std::string ray_tree_svg(const Scene& scene, const RayTree& tree, const std::str
                "\" stroke=\"" + (blocked_shadow ? std::string("#dc2626") : kind_color(n.kind)) + "\" stroke-width=\"" +
                num(width) + "\"" +
                (n.kind == RayKind::shadow ? " stroke-dasharray=\"" + num(5 * unit) + "," + num(3 * unit) + "\"" : "") +
-               " stroke-opacity=\"" + num(opacity) + "\"><title>" + escape(tip) +
-               "</title></line>\n";
+               " stroke-opacity=\"" + num(opacity) + "\"><title>" + escape(tip) + "</title></line>\n";
         if (n.hit) {
             const char* fill = blocked_shadow ? "#dc2626" : "#111827";
             out += "<circle cx=\"" + num(b.x) + "\" cy=\"" + num(b.y) + "\" r=\"" + num(3 * unit) + "\" fill=\"" +

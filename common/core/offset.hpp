@@ -33,9 +33,9 @@ template <class R>
 struct OffsetConstants;
 template <>
 struct OffsetConstants<float> {
-    static constexpr float origin = 1.0f / 32;           // below this magnitude: a fixed step
-    static constexpr float fixed_step = 1.0f / 65536;    // that step, times n
-    static constexpr std::int32_t ulps = 256;            // elsewhere: this many units in the last place, times n
+    static constexpr float origin = 1.0f / 32;         // below this magnitude: a fixed step
+    static constexpr float fixed_step = 1.0f / 65536;  // that step, times n
+    static constexpr std::int32_t ulps = 256;          // elsewhere: this many units in the last place, times n
 };
 template <>
 struct OffsetConstants<double> {

@@ -9,8 +9,8 @@ Affine Affine::rotate(const Vec3& axis, Real degrees) {
     // Rodrigues' formula: R = cos I + sin [k]x + (1 - cos) k k^T, columns first (glm).
     const Vec3 k = unit_vector(axis);
     const Real a = glm::radians(degrees), c = std::cos(a), s = std::sin(a), C = 1 - c;
-    const Mat3 r(c + k.x * k.x * C, k.y * k.x * C + k.z * s, k.z * k.x * C - k.y * s,  // column 0
-                 k.x * k.y * C - k.z * s, c + k.y * k.y * C, k.z * k.y * C + k.x * s,  // column 1
+    const Mat3 r(c + k.x * k.x * C, k.y * k.x * C + k.z * s, k.z * k.x * C - k.y * s,   // column 0
+                 k.x * k.y * C - k.z * s, c + k.y * k.y * C, k.z * k.y * C + k.x * s,   // column 1
                  k.x * k.z * C + k.y * s, k.y * k.z * C - k.x * s, c + k.z * k.z * C);  // column 2
     return Affine{r, Vec3(0)};
 }
@@ -27,7 +27,7 @@ Affine inverse(const Affine& a, const std::string& what) {
     Affine inv;
     inv.m = glm::inverse(a.m);
     inv.t = -(inv.m * a.t);
-    // Near-singular: the condition number (Frobenius norms, 3 for a rotation) past 10^6. Rays
+    // Near-singular: the condition number (Frobenius norms, 3 for a rotation) past 3 x 10^6. Rays
     // taken into such a space grow by as much, and a coordinate of 10^8 (limits.hpp) would
     // leave float's range in the products of the ray tests.
     Real norm = 0, inv_norm = 0;
@@ -38,8 +38,9 @@ Affine inverse(const Affine& a, const std::string& what) {
         }
     const Real condition = std::sqrt(norm) * std::sqrt(inv_norm);
     if (!std::isfinite(condition) || condition > Real(3e6))
-        throw std::invalid_argument(prefix + "nearly singular transform (it squeezes one direction over a million "
-                                           "times more than another)");
+        throw std::invalid_argument(prefix +
+                                    "nearly singular transform (it squeezes one direction over a million "
+                                    "times more than another)");
     return inv;
 }
 

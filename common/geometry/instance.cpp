@@ -12,8 +12,7 @@ Instance::Instance(std::shared_ptr<const Shape> base, const Affine& to_world)
 bool hit(const Instance& instance, const Ray& ray, Interval interval, InstanceHit& result) {
     if (!might_hit(instance.box(), ray, interval)) return false;
     // The owner is stamped by record() below, on the world-space record.
-    return hit_record(instance.base(), object_ray(instance.to_object(), ray), interval, SurfaceRef{},
-                      result.local);
+    return hit_record(instance.base(), object_ray(instance.to_object(), ray), interval, SurfaceRef{}, result.local);
 }
 
 bool occluded(const Instance& instance, const Ray& ray, Interval interval) {

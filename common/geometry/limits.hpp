@@ -27,8 +27,7 @@ inline constexpr Range length{"length", 1e-6, 1e8, "", "/$defs/length"};
 inline constexpr Range reflectance{"reflectance", 0, 1, "", "/$defs/reflectance/items"};
 inline constexpr Range radiance{"radiance", 0, 1e6, "", "/$defs/radiance/items"};
 inline constexpr Range exponent{"Phong exponent", 1e-3, 1e6, "", "/$defs/material/properties/exponent"};
-inline constexpr Range index_of_refraction{"index of refraction", 0.01, 100, "",
-                                          "/$defs/material/properties/ior"};
+inline constexpr Range index_of_refraction{"index of refraction", 0.01, 100, "", "/$defs/material/properties/ior"};
 inline constexpr Range recursion_depth{"recursion depth", 0, 64, "", "/properties/max_depth"};
 inline constexpr Range angle{"angle", -3600, 3600, "degrees", "/$defs/transform_step/properties/degrees"};
 inline constexpr Range field_of_view{"field of view", 1e-3, 179.9, "degrees", "/$defs/camera/properties/fov"};
@@ -58,34 +57,20 @@ inline constexpr Range image_samples{"samples per image", 1, 4294967296.0, "widt
 inline constexpr Range threads{"threads", 0, 1024, "", ""};
 // @book-end
 
-inline constexpr Range all[] = {coordinate,
-                                length,
-                                reflectance,
-                                radiance,
-                                exponent,
-                                index_of_refraction,
-                                recursion_depth,
-                                angle,
-                                field_of_view,
-                                triangle_vertices,
-                                polygon_vertices,
-                                icosphere_subdivisions,
-                                cube_subdivisions,
-                                terrain_cells,
-                                soup_count,
-                                soup_seed,
-                                json_depth,
-                                scene_file_bytes,
-                                obj_file_bytes,
-                                obj_face_corners,
-                                mesh_vertices,
-                                mesh_triangles,
-                                image_file_bytes,
-                                image_side,
-                                image_pixels,
-                                samples_per_pixel,
-                                image_samples,
-                                threads};
+inline constexpr Range all[] = {coordinate,        length,
+                                reflectance,       radiance,
+                                exponent,          index_of_refraction,
+                                recursion_depth,   angle,
+                                field_of_view,     triangle_vertices,
+                                polygon_vertices,  icosphere_subdivisions,
+                                cube_subdivisions, terrain_cells,
+                                soup_count,        soup_seed,
+                                json_depth,        scene_file_bytes,
+                                obj_file_bytes,    obj_face_corners,
+                                mesh_vertices,     mesh_triangles,
+                                image_file_bytes,  image_side,
+                                image_pixels,      samples_per_pixel,
+                                image_samples,     threads};
 
 // True if `value` is in the range (a NaN never is).
 inline constexpr bool contains(const Range& r, double value) {

@@ -169,7 +169,8 @@ std::vector<Fields> Fields::objects(const char* key) const {
     if (!v.is_array()) fail(key, "must be an array of objects");
     std::vector<Fields> result;
     result.reserve(v.size());
-    for (std::size_t i = 0; i < v.size(); ++i) result.emplace_back(reader_, v[i], pointer(key) + "/" + std::to_string(i));
+    for (std::size_t i = 0; i < v.size(); ++i)
+        result.emplace_back(reader_, v[i], pointer(key) + "/" + std::to_string(i));
     return result;
 }
 

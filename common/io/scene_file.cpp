@@ -9,8 +9,8 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
-#include <memory>
 #include <map>
+#include <memory>
 
 namespace rt {
 
@@ -68,7 +68,8 @@ Shape read_shape(const Fields& f, std::vector<const char*> common) {
             Shape shape = t.read(f);
             if (f.has("smooth")) {
                 const Mesh* mesh = std::get_if<Mesh>(&shape);
-                if (!mesh) f.fail("smooth", "only meshes have vertex normals; a " + type + " is shaded by its own normal");
+                if (!mesh)
+                    f.fail("smooth", "only meshes have vertex normals; a " + type + " is shaded by its own normal");
                 if (f.flag("smooth", false)) shape = mesh->smoothed();
             }
             return shape;
@@ -77,8 +78,7 @@ Shape read_shape(const Fields& f, std::vector<const char*> common) {
         }
     }
     if (type == "instance") f.fail("type", "an instance names a shape of /shapes; it cannot be one there");
-    f.fail("type", "unknown surface type \"" + type + "\" (expected " + type_names(surface_types()) +
-                       " or instance)");
+    f.fail("type", "unknown surface type \"" + type + "\" (expected " + type_names(surface_types()) + " or instance)");
 }
 
 void count_triangles(const Shape& shape, SceneSummary& summary) {
@@ -201,7 +201,8 @@ Scene load_scene_text(const std::string& text, const std::string& filename, cons
             for (const Vec3& corner : {box.min, box.max})
                 for (int k = 0; k < 3; ++k)
                     if (!limits::contains(limits::coordinate, double(corner[k])))
-                        f.fail("transform", "moves the shape to " + limits::refuse(limits::coordinate, double(corner[k])));
+                        f.fail("transform", "moves the shape past the coordinate limits (" +
+                                                limits::refuse(limits::coordinate, double(corner[k])) + ")");
         } else if (f.has("transform")) {
             ++summary.identity_transforms;  // costs nothing per ray: the shape is used as it is
         }

@@ -26,7 +26,7 @@ struct TraceContext {
     int node = -1;                   // this ray's node, once open()ed
     Color weight{1};                 // for the tree: the factor this ray's colour will get
     const char* weight_of = "";
-    float reach = 1;                 // the product of the weights from the pixel down to this ray
+    float reach = 1;  // the product of the weights from the pixel down to this ray
 
     // The context of a ray this one casts.
     TraceContext child(RayKind k, Interval iv, const Color& w, const char* why) const {

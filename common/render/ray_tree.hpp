@@ -26,8 +26,8 @@ struct RayNode {
     // through a dielectric also carries Beer's attenuation, folded in here.
     Color weight{1};
     const char* weight_of = "";
-    Color radiance{0};  // what came back along the ray (for a shadow ray: 1 if it reaches the light, 0 if not;
-                        // the light's colour is its weight)
+    Color radiance{0};      // what came back along the ray (for a shadow ray: 1 if it reaches the light, 0 if not;
+                            // the light's colour is its weight)
     const char* note = "";  // why the tree stops here, when it does ("total internal reflection", ...)
 };
 

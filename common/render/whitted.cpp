@@ -37,7 +37,10 @@ Color WhittedIntegrator::Li(const Scene& scene, const Ray& ray, TraceContext& co
                         m.diffuse_at(rec.p),
                         m};
     Color c = sp.diffuse * scene.ambient;
-    for (std::size_t k = 0; k < scene.lights.size(); ++k) {
+    // A surface with neither a diffuse colour nor a highlight (clear glass, a perfect
+    // mirror) takes nothing from the lights: no shadow rays.
+    const bool lit = sp.diffuse != Color(0) || m.has_specular();
+    for (std::size_t k = 0; lit && k < scene.lights.size(); ++k) {
         ++context.counters.light_terms;
         c += direct_light(scene, scene.lights[k], int(k), sp, context);
     }

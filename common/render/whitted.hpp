@@ -12,11 +12,11 @@ namespace rt {
 
 // A hit, turned towards the viewer and ready to shade.
 struct ShadePoint {
-    Vec3 p;          // the hit point
-    Vec3 side;       // unit geometric normal on the viewer's side: where shadow rays leave from
-    Vec3 n;          // unit shading normal on the same side: what the shading terms use
-    Vec3 v;          // unit, towards the viewer
-    Color diffuse;   // the material's diffuse colour at p
+    Vec3 p;         // the hit point
+    Vec3 side;      // unit geometric normal on the viewer's side: where shadow rays leave from
+    Vec3 n;         // unit shading normal on the same side: what the shading terms use
+    Vec3 v;         // unit, towards the viewer
+    Color diffuse;  // the material's diffuse colour at p
     const Material& material;
 };
 

@@ -18,7 +18,8 @@ Material read_material(const Fields& f) {
     m.mirror = f.color("mirror", limits::reflectance, m.mirror);
     m.attenuation = f.color("attenuation", limits::reflectance, m.attenuation);
     if (f.has("attenuation") && !m.is_dielectric()) f.fail("attenuation", "only a dielectric (with 'ior') has it");
-    if (m.is_dielectric() && f.has("mirror")) f.fail("mirror", "a dielectric reflects by Schlick's R, not a mirror colour");
+    if (m.is_dielectric() && f.has("mirror"))
+        f.fail("mirror", "a dielectric reflects by Schlick's R, not a mirror colour");
     return m;
 }
 
