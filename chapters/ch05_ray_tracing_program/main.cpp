@@ -6,8 +6,6 @@ using namespace rt;
 
 int main(int argc, char** argv) {
     ChapterApp app("ch05", "The ray tracing program");
-    const std::string dir = std::string(RTLAB_CHAPTER_DIR) + "/scenes/";
-    for (const char* name : {"spheres", "lambert", "meshes", "skipping"})
-        app.add_scene_file(name, dir + name + ".json");
+    app.add_scene_files(RTLAB_CHAPTER_DIR, {"spheres", "lambert", "meshes", "skipping"});
     return app.run(argc, argv);
 }

@@ -5,7 +5,6 @@ using namespace rt;
 
 int main(int argc, char** argv) {
     ChapterApp app("ch07", "Specular reflection");
-    const std::string dir = std::string(RTLAB_CHAPTER_DIR) + "/scenes/";
-    for (const char* name : {"mirrors", "tinted-sphere"}) app.add_scene_file(name, dir + name + ".json");
+    app.add_scene_files(RTLAB_CHAPTER_DIR, {"mirrors", "tinted-sphere"});
     return app.run(argc, argv);
 }

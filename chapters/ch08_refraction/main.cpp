@@ -5,7 +5,6 @@ using namespace rt;
 
 int main(int argc, char** argv) {
     ChapterApp app("ch08", "Refraction");
-    const std::string dir = std::string(RTLAB_CHAPTER_DIR) + "/scenes/";
-    for (const char* name : {"glass-sphere", "glass-block", "tir"}) app.add_scene_file(name, dir + name + ".json");
+    app.add_scene_files(RTLAB_CHAPTER_DIR, {"glass-sphere", "glass-block", "tir"});
     return app.run(argc, argv);
 }

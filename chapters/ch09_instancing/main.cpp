@@ -5,7 +5,6 @@ using namespace rt;
 
 int main(int argc, char** argv) {
     ChapterApp app("ch09", "Instancing");
-    const std::string dir = std::string(RTLAB_CHAPTER_DIR) + "/scenes/";
-    for (const char* name : {"ellipsoid", "instances"}) app.add_scene_file(name, dir + name + ".json");
+    app.add_scene_files(RTLAB_CHAPTER_DIR, {"ellipsoid", "instances"});
     return app.run(argc, argv);
 }

@@ -6,6 +6,7 @@
 #include "render/scene.hpp"
 
 #include <functional>
+#include <initializer_list>
 #include <optional>
 #include <string>
 #include <vector>
@@ -25,6 +26,10 @@ public:
     void add_scene(std::string name, std::string description, std::function<Scene()> build) {
         scenes_.push_back(
             {std::move(name), std::move(description), [b = std::move(build)](SceneSummary&) { return b(); }});
+    }
+    // Scenes kept as files NAME.json in the chapter's folder `chapter_dir`/scenes/.
+    void add_scene_files(const std::string& chapter_dir, std::initializer_list<const char*> names) {
+        for (const char* name : names) add_scene_file(name, chapter_dir + "/scenes/" + name + ".json");
     }
     // A scene kept as a JSON file beside the chapter (see chapters/*/scenes/).
     void add_scene_file(std::string name, std::string path) {
