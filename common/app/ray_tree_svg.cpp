@@ -241,10 +241,17 @@ std::string ray_tree_svg(const Scene& scene, const RayTree& tree, const std::str
             tip += ", hits " + scene.surfaces.name(n.record.surface) + " at t = " + num(double(n.record.t));
         else
             tip += ", hits nothing: background";
-        if (*n.weight_of) tip += "\nweight (" + std::string(n.weight_of) + "): " + triple(n.weight);
+        if (*n.weight_of) {
+            tip += "\nweight (";
+            tip += n.weight_of;
+            tip += "): " + triple(n.weight);
+        }
         tip += "\nbrings back " + triple(n.radiance);
         tip += "\nshare of the pixel it carries: " + num(reach[i]);
-        if (*n.note) tip += "\n" + std::string(n.note);
+        if (*n.note) {
+            tip += '\n';
+            tip += n.note;
+        }
         out += "<line x1=\"" + num(a.x) + "\" y1=\"" + num(a.y) + "\" x2=\"" + num(b.x) + "\" y2=\"" + num(b.y) +
                "\" stroke=\"" + (blocked_shadow ? std::string("#dc2626") : kind_color(n.kind)) + "\" stroke-width=\"" +
                num(width) + "\"" +
