@@ -192,7 +192,7 @@ int main(int argc, char** argv) {
     };
 
     static const std::regex directive(R"(^\s*<!--\s*excerpt:\s*([^#\s]+)#(\S+)\s*-->\s*$)");
-    static const std::regex image(R"(\]\((\.\./)?(ch\d\d/[^)\s]+\.png)\))");
+    static const std::regex image(R"(\]\((\.\./)?(ch\d\d/[^)\s]+\.(png|svg))\))");
     int errors = 0;
     std::vector<std::pair<fs::path, std::string>> expanded;
     std::vector<std::string> images;

@@ -205,7 +205,8 @@ std::string ray_tree_svg(const Scene& scene, const RayTree& tree, const std::str
     }
 
     for (const Surface& s : scene.surfaces.surfaces()) draw_shape(s.shape, Affine{}, proj, unit, out);
-    // Point lights as suns; directional lights as an arrow at the top.
+    // Point lights as suns. Directional lights have no place to be drawn: their shadow rays
+    // leave the picture towards them.
     for (std::size_t k = 0; k < scene.lights.size(); ++k) {
         const Light& l = scene.lights[k];
         if (l.type == Light::Type::point) {

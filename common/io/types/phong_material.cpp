@@ -1,4 +1,4 @@
-// A material: the Blinn-Phong terms of chapter 05, a solid checkerboard, a mirror colour
+// A material: the Blinn-Phong terms of chapter 05, a checkerboard in x and z, a mirror colour
 // (chapter 07) and a dielectric's index of refraction and Beer attenuation (chapter 08).
 #include "io/scene_types.hpp"
 
