@@ -78,11 +78,7 @@ json pick_json(const SceneEntry& entry, const Scene& scene, int x, int y, const 
            {"hit", p.hit.has_value()}};
     if (p.hit) {
         const HitRecord& h = *p.hit;
-        j["surface"] = h.surface < scene.surfaces.size() ? scene.surfaces.name(h.surface) : "";
-        j["t"] = h.t;
-        j["point"] = to_json(h.p);
-        j["normal"] = to_json(h.normal);
-        if (h.primitive != kNone) j["triangle"] = h.primitive;
+        j.update(hit_json(scene, h));  // the same keys as the tree's hits, at the top level
         if (h.has_barycentrics) {
             j["beta"] = h.beta;
             j["gamma"] = h.gamma;

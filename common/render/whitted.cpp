@@ -60,17 +60,16 @@ Color WhittedIntegrator::Li(const Scene& scene, const Ray& ray, TraceContext& co
 
 Color WhittedIntegrator::trace(const Scene& scene, const Ray& ray, const HitRecord& rec, const Vec3& direction,
                                RayKind kind, const Color& weight, const char* why, TraceContext& context) const {
-    const float share = std::max(weight.r, std::max(weight.g, weight.b));
-    if (!(share > 0)) return Color(0);
-    if (context.reach * share < scene.min_reach) {
-        context.note("a ray that would carry under min_reach (1/1024) of the pixel was not cast");
-        return Color(0);
-    }
     // Leave on the side the new ray goes to: outside for a reflection, inside for a refraction.
     const Vec3 side = glm::dot(direction, rec.normal) >= 0 ? rec.normal : -rec.normal;
     const SpawnedRay s = spawn_ray(rec.p, side, direction, kInfinity, scene.offset, ray.time);
-    context.counters.count(kind);
     TraceContext child = context.child(kind, s.interval, weight, why);
+    if (!(child.reach > 0)) return Color(0);
+    if (child.reach < scene.min_reach) {
+        context.note("a ray that would carry under min_reach (1/1024) of the pixel was not cast");
+        return Color(0);
+    }
+    context.counters.count(kind);
     return weight * Li(scene, s.ray, child);
 }
 
