@@ -144,6 +144,9 @@ scene("max_depth_fraction", {"/max_depth": 2.5}, "/max_depth", "must be a whole 
 scene("offset_unknown", {"/offset": {"method": "magic"}}, "/offset/method", "unknown offset method \"magic\"")
 scene("offset_epsilon_negative", {"/offset": {"method": "course", "epsilon": -1}}, "/offset/epsilon", "length")
 scene("offset_unknown_key", {"/offset": {"eps": 1}}, "unknown key 'eps'")
+# Chapter 10: the search structure.
+scene("accel_unknown", {"/accel": "kd-tree"}, "/accel", "unknown accel \"kd-tree\"")
+scene("accel_not_text", {"/accel": 3}, "/accel")
 scene("transform_too_flat", {S + "/transform": [{"scale": [1, 1e-7, 1]}]}, "nearly singular transform")
 scene("transform_singular", {S + "/transform": [{"scale": [1, 0, 1]}]}, S + "/transform", "singular transform")
 scene("transform_scale_zero", {S + "/transform": [{"scale": 0}]}, "singular transform")
@@ -287,6 +290,8 @@ renders("mirror_sphere_depth_64", {**W, M + "/mirror": [1, 1, 1], L + "/position
 renders("transform_nearly_flat", {**W, S + "/transform": [{"scale": [1, 1e-5, 1]}, {"rotate": [1, 1, 0], "degrees": 30}]})
 renders("transform_mirror", {**W, S + "/transform": [{"scale": [-1, 1, 1]}]})
 renders("offset_course_tiny", {**W, "/offset": {"method": "course", "epsilon": 1e-6}})
+for kind in ["none", "bvh-sort", "bvh-midpoint", "bvh-sah", "fast"]:
+    renders("accel_" + kind.replace("-", "_"), {**W, "/accel": kind})
 
 good = patched({})
 scene_text("empty", "", ["not valid JSON"])
@@ -436,6 +441,8 @@ cli("pick_text", ["--pick", "a,b"] + o, ["--pick"])
 cli("depth_negative", ["--depth", "-1"] + o, ["--depth"])
 cli("depth_past_limit", ["--depth", "65"] + o, ["--depth"])
 cli("depth_text", ["--depth", "deep"] + o, ["--depth", "whole number"])
+cli("accel_unknown", ["--accel", "octree"] + o, ["--accel", "unknown 'octree'"])
+cli("accel_empty", ["--accel", ""] + o, ["--accel"])
 cli("svg_without_tree", ["--pick", "1,1", "--svg", out / "tree.svg"] + o, ["--svg", "whitted"])
 cli("svg_without_pick", ["--svg", out / "tree.svg"] + o, ["--svg", "needs --pick"])
 cli("svg_wrong_extension", ["--pick", "1,1", "--svg", out / "tree.png"] + o, ["--svg", "must end in .svg"])

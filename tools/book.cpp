@@ -7,6 +7,10 @@
 // code as it is, and cannot drift from it: with --check, any excerpt whose file or marker is
 // missing is reported and the exit code is 1.
 //
+// A line <!-- include: book/measured/FILE.md --> is replaced by that file's text: the tables
+// a benchmark command writes (./lab bench complexity, ./lab bench embree), so the book shows
+// what was last measured. Pictures under book/measured/ are copied like the renders.
+//
 // Two editions come from the same source. The instructor edition shows every excerpt
 // whole. The student edition replaces the body of every exercise region (between
 // "// @exercise" and "// @end") with one comment line, so it shows each exercise's
@@ -192,7 +196,8 @@ int main(int argc, char** argv) {
     };
 
     static const std::regex directive(R"(^\s*<!--\s*excerpt:\s*([^#\s]+)#(\S+)\s*-->\s*$)");
-    static const std::regex image(R"(\]\((\.\./)?(ch\d\d/[^)\s]+\.(png|svg))\))");
+    static const std::regex include(R"(^\s*<!--\s*include:\s*(\S+)\s*-->\s*$)");
+    static const std::regex image(R"(\]\((\.\./)?((ch\d\d|measured)/[^)\s]+\.(png|svg))\))");
     int errors = 0;
     std::vector<std::pair<fs::path, std::string>> expanded;
     std::vector<std::string> images;
@@ -223,7 +228,16 @@ int main(int argc, char** argv) {
             if (number == 1 && !front_matter) text << nav << '\n';
             std::smatch m;
             if (l.rfind("```", 0) == 0) fence = !fence;
-            if (std::regex_match(l, m, directive)) {
+            if (std::regex_match(l, m, include)) {
+                bool found = false;
+                const auto included = read_lines(root / m[1].str(), found);
+                if (!found) {
+                    std::cerr << "book/" << ch.filename().string() << ":" << number << ": no file " << m[1].str()
+                              << '\n';
+                    ++errors;
+                }
+                for (const auto& i : included) text << link_sections(i, where) << '\n';
+            } else if (std::regex_match(l, m, directive)) {
                 std::string code;
                 if (!excerpt(root, m[1].str(), m[2].str(), student, code)) {
                     std::cerr << "book/" << ch.filename().string() << ":" << number << ": " << code << '\n';
@@ -262,7 +276,9 @@ int main(int argc, char** argv) {
     // A render from `./lab run` (out/chNN/) if there is one, else the golden image.
     for (const std::string& img : images) {
         const fs::path rendered = out.parent_path() / img, golden = root / "tests/golden" / img;
-        const fs::path from = fs::exists(rendered) ? rendered : golden;
+        const fs::path from = img.rfind("measured/", 0) == 0 ? root / "book" / img
+                              : fs::exists(rendered)         ? rendered
+                                                             : golden;
         if (!fs::exists(from)) {
             std::cerr << "rtlab-book: warning: no image " << img << " (run ./lab run first)\n";
             continue;

@@ -101,8 +101,23 @@ json pick_json(const SceneEntry& entry, const Scene& scene, int x, int y, const 
     return j;
 }
 
-json stats_json(const std::string& chapter, const SceneEntry& entry, const RenderOptions& o, const RenderResult& r,
-                const SceneSummary& s) {
+json accel_json(const Scene& scene) {
+    if (!scene.accel) return nullptr;
+    const AccelInfo& a = scene.accel->info();
+    return {{"kind", accel_name(a.kind)},
+            {"build_seconds", a.build_seconds},
+            {"primitives", a.primitives},
+            {"nodes", a.nodes},
+            {"depth", a.depth},
+            {"bytes", a.bytes},
+            {"bytes_per_primitive", a.primitives ? double(a.bytes) / double(a.primitives) : 0.0}};
+}
+
+json stats_json(const std::string& chapter, const SceneEntry& entry, const Scene& scene, const RenderOptions& o,
+                const RenderResult& r, const SceneSummary& s) {
+    const auto per_ray = [&](std::uint64_t n) {
+        return r.counters.total() ? double(n) / double(r.counters.total()) : 0.0;
+    };
     const double mrays = r.seconds > 0 ? double(r.counters.total()) / r.seconds / 1e6 : 0.0;
     json rays{{"total", r.counters.total()}};
     for (std::size_t k = 0; k < kRayKinds; ++k) rays[kRayKindNames[k]] = r.counters.rays[k];
@@ -118,6 +133,12 @@ json stats_json(const std::string& chapter, const SceneEntry& entry, const Rende
            {"rays", rays},
            {"shading", {{"light_terms", r.counters.light_terms}, {"specular_terms", r.counters.specular_terms}}},
            {"nonfinite_samples", r.counters.nonfinite_samples},
+           {"accel", accel_json(scene)},
+           {"search",
+            {{"nodes_visited", r.counters.nodes_visited},
+             {"primitives_tested", r.counters.primitives_tested},
+             {"nodes_per_ray", per_ray(r.counters.nodes_visited)},
+             {"primitives_per_ray", per_ray(r.counters.primitives_tested)}}},
            {"seconds", r.seconds},
            {"mrays_per_s", mrays}};
     if (s.from_file) {  // what loading the scene file kept, and what it left out
@@ -187,6 +208,12 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
                    "maximum recursion depth of reflection and refraction (default: the scene's)")
         ->check(whole)
         ->check(range(limits::recursion_depth));
+    cli.add_option("--accel", inv.accel, "search structure: " + accel_names() + " (default: the scene's, else fast)")
+        ->check(CLI::Validator(
+            [](std::string& value) {
+                return accel_kind(value) ? std::string() : "unknown '" + value + "' (expected " + accel_names() + ")";
+            },
+            ""));
     cli.add_flag("--stats", inv.stats, "print render statistics as one JSON line");
     cli.set_version_flag("--version",
                          std::string(id_ + " (rtlab " + kVersion + ", Real=" + real_name() + ", " + RTLAB_TRACK_NAME +
@@ -243,6 +270,7 @@ int ChapterApp::execute(const Invocation& inv) const {
         Scene scene = inv.scene.build(summary);
         scene.name = inv.scene.name;
         if (inv.max_depth) scene.max_depth = *inv.max_depth;
+        scene.build_accel(inv.accel.empty() ? scene.accel_kind : *accel_kind(inv.accel));
         if (!inv.pick.empty()) {
             const Pick p = pick(scene, inv.options, inv.pick[0], inv.pick[1]);
             const std::string text = dump(pick_json(inv.scene, scene, inv.pick[0], inv.pick[1], p));
@@ -262,7 +290,7 @@ int ChapterApp::execute(const Invocation& inv) const {
         const RenderResult r = render(scene, o);
         // Everything that can fail happens before the image is written, so a failed run
         // leaves no file.
-        const std::string stats = inv.stats ? dump(stats_json(id_, inv.scene, o, r, summary)) : "";
+        const std::string stats = inv.stats ? dump(stats_json(id_, inv.scene, scene, o, r, summary)) : "";
         write_image(r.image, inv.output);
         if (inv.stats) std::printf("%s\n", stats.c_str());
     } catch (const std::exception& e) {

@@ -51,6 +51,7 @@ public:
         std::vector<int> pick;         // empty, or X and Y
         std::string svg;               // with pick: draw the ray tree into this file
         std::optional<int> max_depth;  // --depth: overrides the scene's
+        std::string accel;             // --accel: overrides the scene's (empty: the scene's)
         bool stats = false;
     };
     // Parses and checks a command line without touching any file: the exit code to end with

@@ -32,7 +32,9 @@ inline bool might_hit(const Box& box, const Ray& ray, Interval interval) {
     for (int a = 0; a < 3; ++a) {
         const Real inv = Real(1) / ray.direction[a];
         Real t0 = (box.min[a] - ray.origin[a]) * inv, t1 = (box.max[a] - ray.origin[a]) * inv;
-        if (t0 > t1) std::swap(t0, t1);
+        // The sign of 1/d orders the planes (-0 gives -inf); comparing t0 with t1 would not
+        // when one of them is NaN.
+        if (inv < 0) std::swap(t0, t1);
         if (t0 > lo) lo = t0;
         if (t1 < hi) hi = t1;
     }

@@ -20,6 +20,9 @@ struct RayCounters {
     // Samples whose radiance came out NaN or infinite, and were left out of their pixel.
     // Zero for every scene the lab ships: the tests check it.
     std::uint64_t nonfinite_samples = 0;
+    // Search work (core/bvh.hpp, TraversalCount): boxes and primitives tested.
+    std::uint64_t nodes_visited = 0;
+    std::uint64_t primitives_tested = 0;
 
     void count(RayKind kind) { ++rays[std::size_t(kind)]; }
     std::uint64_t of(RayKind kind) const { return rays[std::size_t(kind)]; }
@@ -33,6 +36,8 @@ struct RayCounters {
         light_terms += o.light_terms;
         specular_terms += o.specular_terms;
         nonfinite_samples += o.nonfinite_samples;
+        nodes_visited += o.nodes_visited;
+        primitives_tested += o.primitives_tested;
         return *this;
     }
 };

@@ -36,4 +36,17 @@ struct HitRecord {
     Real gamma = 0;
 };
 
+// The one order in which every search ranks hits, so that brute force and every
+// acceleration structure return the same hit: the nearer first; at the same distance the
+// lower surface id, then the lower primitive (a ray through an edge meets two triangles at
+// the same t). Is a hit at t on (surface, primitive) closer than `best`?
+inline bool closer(Real t, SurfaceId surface, std::uint32_t primitive, const HitRecord& best) {
+    if (t != best.t) return t < best.t;
+    if (surface != best.surface) return surface < best.surface;
+    return primitive < best.primitive;
+}
+inline bool closer(const HitRecord& a, const HitRecord& best) {
+    return closer(a.t, a.surface, a.primitive, best);
+}
+
 }  // namespace rt

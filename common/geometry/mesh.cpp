@@ -33,6 +33,24 @@ void validate(const MeshData& mesh, const std::string& what) {
                                             std::to_string(v) + " of " + std::to_string(mesh.positions.size()));
 }
 
+namespace {
+
+std::shared_ptr<const MeshAccel> build_accel(const MeshData& d) {
+    std::vector<Box> boxes(d.triangles.size());
+    for (std::size_t k = 0; k < boxes.size(); ++k)
+        for (std::uint32_t v : d.triangles[k]) boxes[k].expand(d.positions[v]);
+    auto a = std::make_shared<MeshAccel>();
+    a->bvh = build_bvh(boxes);
+    a->corners.reserve(boxes.size());
+    for (std::uint32_t item : a->bvh.items) {
+        const auto& t = d.triangles[item];
+        a->corners.push_back({d.positions[t[0]], d.positions[t[1]], d.positions[t[2]]});
+    }
+    return a;
+}
+
+}  // namespace
+
 Mesh::Mesh(MeshData data) {
     validate(data, "mesh");
     std::vector<std::array<std::uint32_t, 3>> kept, kept_normals;
@@ -52,32 +70,38 @@ Mesh::Mesh(MeshData data) {
     for (const auto& t : data.triangles)
         for (std::uint32_t v : t) box_.expand(data.positions[v]);
     data_ = std::make_shared<const MeshData>(std::move(data));
+    accel_ = build_accel(*data_);
 }
 
 bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
+    const MeshAccel& a = mesh.accel();
     if (!might_hit(mesh.box(), ray, interval)) return false;
-    const MeshData& d = mesh.data();
-    bool found = false;
-    for (std::size_t k = 0; k < d.triangles.size(); ++k) {
-        const auto& tri = d.triangles[k];
+    const Real t_min = interval.min;
+    Real best_t = interval.max;
+    std::uint32_t best = kNone;
+    return closest_hit(a.bvh, ray, interval, [&](std::uint32_t k, Interval& iv) {
+        const auto& c = a.corners[k];
         TriangleHit h;
-        if (ray_triangle_watertight(ray, d.positions[tri[0]], d.positions[tri[1]], d.positions[tri[2]], interval, h)) {
-            result = MeshHit{h, std::uint32_t(k)};
-            interval.max = h.t;  // only closer hits from here on
-            found = true;
-        }
-    }
-    return found;
+        if (!ray_triangle_watertight(ray, c[0], c[1], c[2], Interval{t_min, widen_far(iv.max)}, h)) return false;
+        const std::uint32_t index = a.bvh.items[k];
+        // Inside the interval asked for, and closer in the one order (lower index at equal t).
+        if (!(h.t <= best_t) || (h.t == best_t && index > best)) return false;
+        best_t = h.t;
+        best = index;
+        result = MeshHit{h, index};
+        iv.max = h.t;
+        return true;
+    });
 }
 
 bool occluded(const Mesh& mesh, const Ray& ray, Interval interval) {
     if (!might_hit(mesh.box(), ray, interval)) return false;
-    const MeshData& d = mesh.data();
-    TriangleHit h;
-    for (const auto& tri : d.triangles)
-        if (ray_triangle_watertight(ray, d.positions[tri[0]], d.positions[tri[1]], d.positions[tri[2]], interval, h))
-            return true;
-    return false;
+    const MeshAccel& a = mesh.accel();
+    return any_hit(a.bvh, ray, interval, [&](std::uint32_t k, Interval& iv) {
+        const auto& c = a.corners[k];
+        TriangleHit h;
+        return ray_triangle_watertight(ray, c[0], c[1], c[2], iv, h);
+    });
 }
 
 HitRecord record(const Mesh& mesh, const Ray&, const MeshHit& h, SurfaceRef who) {

@@ -1,6 +1,7 @@
 #pragma once
 // Indexed triangle meshes. Triangles share vertices by index, so an edge common to two
 // triangles has bit-identical end points in both: what the watertight test needs.
+#include "core/bvh.hpp"
 #include "geometry/triangle.hpp"
 
 #include <array>
@@ -37,11 +38,20 @@ struct MeshHit {
     std::uint32_t index;
 };
 
+// A mesh's own search structure (book §10.5): a BVH over its triangles, with each
+// triangle's corners copied out in the BVH's leaf order, so a leaf reads its triangles from
+// consecutive memory instead of through two index arrays.
+struct MeshAccel {
+    FlatBvh bvh;
+    std::vector<std::array<Vec3, 3>> corners;  // corners[k]: triangle bvh.items[k]
+
+    std::size_t memory_bytes() const { return bvh.memory_bytes() + corners.size() * sizeof(corners[0]); }
+};
+
 // A mesh: geometry only. Its data is shared, so copies of a Mesh (two surfaces wearing
-// different materials, later two instances) cost one pointer, not a copy of the triangles.
-// Until the acceleration chapters, a ray tests every triangle: the brute-force search of
-// course §9.4. Degenerate (zero-area) triangles are dropped once, here, so they cost
-// nothing per ray.
+// different materials, two instances) cost one pointer, not a copy of the triangles, and
+// share one BVH over them: the lower level of the two-level fast path. Degenerate
+// (zero-area) triangles are dropped once, here, so they cost nothing per ray.
 class Mesh {
 public:
     using Hit = MeshHit;
@@ -49,6 +59,7 @@ public:
     explicit Mesh(MeshData data);
 
     const MeshData& data() const { return *data_; }
+    const MeshAccel& accel() const { return *accel_; }
     bool smooth() const { return !data_->normal_triangles.empty(); }
     // The same mesh with vertex normals computed (compute_vertex_normals): shaded smoothly.
     Mesh smoothed() const;
@@ -57,10 +68,13 @@ public:
 
 private:
     std::shared_ptr<const MeshData> data_;
+    std::shared_ptr<const MeshAccel> accel_;
     std::size_t dropped_ = 0;
     Box box_;
 };
 
+// The closest hit through the mesh's BVH; at equal t the lower triangle index, so the
+// answer is the brute-force one (geometry/hit_record.hpp, closer).
 bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result);
 // True as soon as any triangle is hit in the interval: shadow rays need no closest hit.
 bool occluded(const Mesh& mesh, const Ray& ray, Interval interval);

@@ -120,7 +120,7 @@ Scene load_scene_text(const std::string& text, const std::string& filename, cons
     const json doc = parse(text, filename);
     const JsonReader reader(text, filename, base_dir);
     const Fields top(reader, doc, "");
-    top.only({"$schema", "description", "camera", "shading", "background", "ambient", "max_depth", "offset",
+    top.only({"$schema", "description", "camera", "shading", "background", "ambient", "max_depth", "offset", "accel",
               "materials", "lights", "shapes", "surfaces"});
     SceneSummary summary;
     summary.from_file = true;
@@ -131,9 +131,14 @@ Scene load_scene_text(const std::string& text, const std::string& filename, cons
     const std::string shading = top.text("shading", "phong");
     scene.integrator = make_integrator(shading);
     if (!scene.integrator)
-        top.fail("shading",
-                 "unknown shading \"" + shading + "\" (expected phong, whitted, normal, barycentric or direction)");
+        top.fail("shading", "unknown shading \"" + shading +
+                                "\" (expected phong, whitted, normal, barycentric, direction or cost)");
     scene.max_depth = top.integer("max_depth", limits::recursion_depth, scene.max_depth);
+    const std::string accel = top.text("accel", accel_name(scene.accel_kind));
+    if (const auto kind = accel_kind(accel))
+        scene.accel_kind = *kind;
+    else
+        top.fail("accel", "unknown accel \"" + accel + "\" (expected " + accel_names() + ")");
     if (top.has("offset")) {
         const Fields o(reader, doc["offset"], "/offset");
         o.only({"method", "epsilon"});

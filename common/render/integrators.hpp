@@ -57,6 +57,18 @@ public:
     }
 };
 
+// Colour = what finding the first hit cost (book §10.6): boxes plus primitives tested for
+// the camera ray, on a heat scale from black (nothing) through blue and red to yellow at
+// `full` tests and beyond. Pictures where a structure spends its time.
+class CostIntegrator : public Integrator {
+public:
+    explicit CostIntegrator(float full = 256) : full_(full) {}
+    Color Li(const Scene& scene, const Ray& ray, TraceContext&) const override;
+
+private:
+    float full_;
+};
+
 // The ray tracing program of course §9.4: ambient + Lambert + Blinn-Phong for every light,
 // no shadows yet. Highlights are computed only for materials that have a specular colour.
 class PhongIntegrator : public Integrator {

@@ -1,5 +1,7 @@
 #include "render/render.hpp"
 
+#include "core/bvh.hpp"
+
 #include "geometry/limits.hpp"
 
 #include <tbb/blocked_range.h>
@@ -98,6 +100,7 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
 
     auto render_tile = [&](int tile) {
         RayCounters counters;
+        traversal_tally = {};  // a tile runs on one thread: what the searches count is this tile's
         const int x0 = (tile % tiles_x) * kTile, y0 = (tile / tiles_x) * kTile;
         const int x1 = std::min(x0 + kTile, o.width), y1 = std::min(y0 + kTile, o.height);
         for (int y = y0; y < y1; ++y) {
@@ -121,6 +124,8 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
                 result.image.at(i, y) = sum / float(o.spp);
             }
         }
+        counters.nodes_visited += traversal_tally.nodes;
+        counters.primitives_tested += traversal_tally.items;
         {
             std::lock_guard lock(counters_mutex);
             result.counters += counters;

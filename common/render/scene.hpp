@@ -1,7 +1,7 @@
 #pragma once
 // Everything a render needs: what is seen (surfaces, materials, lights), from where
 // (camera) and how it is shaded (integrator).
-#include "accel/surface_list.hpp"
+#include "accel/accel.hpp"
 #include "core/offset.hpp"
 #include "render/camera.hpp"
 #include "render/integrator.hpp"
@@ -28,6 +28,11 @@ struct Scene {
     // how secondary rays leave a surface (chapter 06).
     int max_depth = 5;
     Offset offset;
+    // The search structure (book §10.6): what the scene file asks for, and once built (by
+    // build_accel(), after the last surface is added), the structure itself. Until then the
+    // queries search the list (exercise 5.1).
+    AccelKind accel_kind = AccelKind::fast;
+    std::shared_ptr<const Accel> accel;
     // A secondary ray that would carry less than this share of its pixel is not cast. Each
     // glass hit splits a ray in two whose weights add up to at most its own, so this bounds
     // a camera ray's tree to about 2 / min_reach rays, whatever max_depth allows (book §8.4).
@@ -43,15 +48,25 @@ struct Scene {
     // here, once, instead of being looked at for every shading point. Returns how many.
     int drop_unused_lights();
 
+    // Builds the search structure of `kind` over the surfaces (replacing any earlier one).
+    void build_accel(AccelKind kind) {
+        accel_kind = kind;
+        accel = std::make_shared<const Accel>(surfaces, kind);
+    }
+
     // The two queries every integrator asks: the closest hit, and whether anything at all is
     // in the way (shadow rays).
     bool hit(const Ray& ray, Interval interval, HitRecord& rec) const {
+        if (accel) return accel->hit(surfaces, ray, interval, rec);
         // One surface needs no search. This also keeps the pictures of chapters 02 and 03
         // (one shape each) from depending on exercise 5.1, the search over a list.
         if (surfaces.size() == 1) return surfaces[0].hit(ray, interval, rec);
         return surfaces.hit(ray, interval, rec);
     }
-    bool occluded(const Ray& ray, Interval interval) const { return surfaces.occluded(ray, interval); }
+    bool occluded(const Ray& ray, Interval interval) const {
+        if (accel) return accel->occluded(surfaces, ray, interval);
+        return surfaces.occluded(ray, interval);
+    }
 };
 
 // The dark grey behind the pictures of geometry (chapters 02-04): not black, so a black

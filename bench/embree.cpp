@@ -1,0 +1,257 @@
+// The lab's fast path against Embree 3 (book §10.7), casting the same rays at the same
+// triangles, one ray at a time on each side (rtcIntersect1 / rtcOccluded1), on 1 and 2
+// threads, measured in the same run. Built only when Debian's libembree-dev is installed.
+//
+//   build/release/bin/bench_embree [--rounds N] [--size S] [--no-procedural] [MESH.obj ...]
+//
+// Inputs: a terrain of ~10^5 and one of ~10^6 triangles, a soup of 10^6 triangles, and every
+// OBJ given. Rays: the primary rays of an S x S camera (default 512) looking at the mesh, and
+// shadow rays from each primary hit (the lab's, offset along the ray) towards a point light.
+// For each input and thread count it prints Mrays/s of both and their ratio (best of N
+// rounds, the two interleaved), build times (the lab's SAH, Embree's high-quality build),
+// memory per triangle, and how often the two agree: hit or miss, and t to 1e-4 relative.
+#include "accel/accel.hpp"
+#include "geometry/procedural.hpp"
+#include "io/obj.hpp"
+
+#include <embree3/rtcore.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+#include <tbb/task_arena.h>
+
+#include <atomic>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <functional>
+#include <string>
+#include <vector>
+
+using namespace rt;
+
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double seconds_since(Clock::time_point start) {
+    return std::chrono::duration<double>(Clock::now() - start).count();
+}
+
+std::atomic<long long> embree_bytes{0};
+
+bool monitor(void*, ssize_t bytes, bool) {
+    embree_bytes += bytes;
+    return true;
+}
+
+struct EmbreeScene {
+    RTCDevice device = nullptr;
+    RTCScene scene = nullptr;
+    double build_seconds = 0;
+    long long bytes = 0;
+
+    EmbreeScene(const MeshData& mesh) {
+        device = rtcNewDevice(nullptr);
+        rtcSetDeviceMemoryMonitorFunction(device, monitor, nullptr);
+        const long long before = embree_bytes;
+        const auto start = Clock::now();
+        scene = rtcNewScene(device);
+        rtcSetSceneBuildQuality(scene, RTC_BUILD_QUALITY_HIGH);
+        RTCGeometry geometry = rtcNewGeometry(device, RTC_GEOMETRY_TYPE_TRIANGLE);
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                              3 * sizeof(float), mesh.positions.size()));
+        for (std::size_t k = 0; k < mesh.positions.size(); ++k)
+            for (int a = 0; a < 3; ++a) v[3 * k + std::size_t(a)] = float(mesh.positions[k][a]);
+        auto* t = static_cast<unsigned*>(rtcSetNewGeometryBuffer(geometry, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
+                                                                 3 * sizeof(unsigned), mesh.triangles.size()));
+        for (std::size_t k = 0; k < mesh.triangles.size(); ++k)
+            for (int a = 0; a < 3; ++a) t[3 * k + std::size_t(a)] = mesh.triangles[k][std::size_t(a)];
+        rtcSetGeometryBuildQuality(geometry, RTC_BUILD_QUALITY_HIGH);
+        rtcCommitGeometry(geometry);
+        rtcAttachGeometry(scene, geometry);
+        rtcReleaseGeometry(geometry);
+        rtcCommitScene(scene);
+        build_seconds = seconds_since(start);
+        bytes = embree_bytes - before;
+    }
+    ~EmbreeScene() {
+        rtcReleaseScene(scene);
+        rtcReleaseDevice(device);
+    }
+
+    float hit(const Ray& r, float tfar) const {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        RTCRayHit rh{};
+        rh.ray.org_x = float(r.origin.x);
+        rh.ray.org_y = float(r.origin.y);
+        rh.ray.org_z = float(r.origin.z);
+        rh.ray.dir_x = float(r.direction.x);
+        rh.ray.dir_y = float(r.direction.y);
+        rh.ray.dir_z = float(r.direction.z);
+        rh.ray.tnear = 0;
+        rh.ray.tfar = tfar;
+        rh.ray.mask = ~0u;
+        rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
+        rtcIntersect1(scene, &context, &rh);
+        return rh.hit.geomID == RTC_INVALID_GEOMETRY_ID ? std::numeric_limits<float>::infinity() : rh.ray.tfar;
+    }
+    bool occluded(const Ray& r, float tfar) const {
+        RTCIntersectContext context;
+        rtcInitIntersectContext(&context);
+        RTCRay ray{};
+        ray.org_x = float(r.origin.x);
+        ray.org_y = float(r.origin.y);
+        ray.org_z = float(r.origin.z);
+        ray.dir_x = float(r.direction.x);
+        ray.dir_y = float(r.direction.y);
+        ray.dir_z = float(r.direction.z);
+        ray.tnear = 0;
+        ray.tfar = tfar;
+        ray.mask = ~0u;
+        rtcOccluded1(scene, &context, &ray);
+        return ray.tfar < 0;  // Embree sets tfar to -inf when something is in the way
+    }
+};
+
+// Seconds for `work(begin, end)` over n rays on `threads` threads, in chunks of 4096.
+double timed(int threads, std::size_t n, const std::function<void(std::size_t, std::size_t)>& work) {
+    tbb::task_arena arena(threads);
+    const auto start = Clock::now();
+    arena.execute([&] {
+        tbb::parallel_for(tbb::blocked_range<std::size_t>(0, n, 4096),
+                          [&](const tbb::blocked_range<std::size_t>& r) { work(r.begin(), r.end()); });
+    });
+    return seconds_since(start);
+}
+
+struct Input {
+    std::string name;
+    MeshData mesh;
+};
+
+void measure(const Input& input, int size, int rounds) {
+    const auto lab_start = Clock::now();
+    SurfaceList list;
+    list.add(Mesh(input.mesh));
+    const Accel accel(list, AccelKind::fast);
+    const double lab_build = seconds_since(lab_start);
+    const Mesh& mesh = std::get<Mesh>(list[0].shape);
+    const std::size_t triangles = mesh.data().triangles.size();
+    const double lab_bytes = double(accel.info().bytes + memory_bytes(mesh.data()));
+    const EmbreeScene embree(mesh.data());
+
+    // A camera on the diagonal above the mesh's box, its whole box in view.
+    const Box box = mesh.box();
+    const Vec3 centre = (box.min + box.max) * Real(0.5), extent = box.max - box.min;
+    const Real reach = glm::length(extent);
+    const Vec3 eye = centre + Vec3(0.6, 0.5, 0.9) * reach;
+    const Vec3 w = glm::normalize(eye - centre), u = glm::normalize(glm::cross(Vec3(0, 1, 0), w)), v = glm::cross(w, u);
+    std::vector<Ray> primary;
+    primary.reserve(std::size_t(size) * std::size_t(size));
+    for (int j = 0; j < size; ++j)
+        for (int i = 0; i < size; ++i) {
+            const Real x = (Real(i) + Real(0.5)) / Real(size) - Real(0.5);
+            const Real y = (Real(j) + Real(0.5)) / Real(size) - Real(0.5);
+            primary.push_back(Ray{eye, x * Real(0.9) * u + y * Real(0.9) * v - w});
+        }
+    // Shadow rays: from each lab hit, nudged back along the ray, to a light above.
+    const Vec3 light = centre + Vec3(-0.3, 1.2, 0.4) * reach;
+    std::vector<Ray> shadow;
+    int agree = 0, t_agree = 0, both_hit = 0;
+    for (const Ray& r : primary) {
+        HitRecord rec;
+        const bool lab_hit = accel.hit(list, r, Interval{}, rec);
+        const float e = embree.hit(r, std::numeric_limits<float>::infinity());
+        const bool embree_hit = std::isfinite(e);
+        agree += lab_hit == embree_hit;
+        if (lab_hit && embree_hit) {
+            ++both_hit;
+            t_agree += std::abs(double(e) - double(rec.t)) <= 1e-4 * double(rec.t);
+            const Vec3 p = r.at(rec.t * Real(0.9999));
+            shadow.push_back(Ray{p, light - p});
+        }
+    }
+    int shadow_agree = 0;
+    for (const Ray& r : shadow) shadow_agree += accel.occluded(list, r, Interval{0, 1}) == embree.occluded(r, 1.0f);
+
+    std::printf("\n%s: %zu triangles; %zu primary rays (%d hit), %zu shadow rays\n", input.name.c_str(), triangles,
+                primary.size(), both_hit, shadow.size());
+    std::printf(
+        "  build: lab SAH %.3f s, Embree high quality %.3f s; memory per triangle: lab %.1f B (mesh + BVH), "
+        "Embree %.1f B\n",
+        lab_build, embree.build_seconds, lab_bytes / double(triangles), double(embree.bytes) / double(triangles));
+    std::printf("  agreement: hit/miss %.4f %%, t within 1e-4 %.4f %% of common hits, shadow %.4f %%\n",
+                100.0 * agree / double(primary.size()), both_hit ? 100.0 * t_agree / both_hit : 100.0,
+                shadow.empty() ? 100.0 : 100.0 * shadow_agree / double(shadow.size()));
+    std::printf("  %-8s %7s %12s %12s %7s\n", "rays", "threads", "lab Mrays/s", "Embree", "ratio");
+    std::atomic<long> sink{0};
+    for (const char* kind : {"primary", "shadow"}) {
+        const bool is_primary = kind[0] == 'p';
+        const std::vector<Ray>& rays = is_primary ? primary : shadow;
+        if (rays.empty()) continue;
+        for (int threads : {1, 2}) {
+            double lab = 1e30, emb = 1e30;
+            for (int round = 0; round < rounds; ++round) {
+                lab = std::min(lab, timed(threads, rays.size(), [&](std::size_t b, std::size_t e) {
+                                   long n = 0;
+                                   for (std::size_t k = b; k < e; ++k) {
+                                       HitRecord rec;
+                                       n += is_primary ? accel.hit(list, rays[k], Interval{}, rec)
+                                                       : accel.occluded(list, rays[k], Interval{0, 1});
+                                   }
+                                   sink += n;
+                               }));
+                emb = std::min(
+                    emb, timed(threads, rays.size(), [&](std::size_t b, std::size_t e) {
+                        long n = 0;
+                        for (std::size_t k = b; k < e; ++k)
+                            n += is_primary ? std::isfinite(embree.hit(rays[k], std::numeric_limits<float>::infinity()))
+                                            : embree.occluded(rays[k], 1.0f);
+                        sink += n;
+                    }));
+            }
+            const double lab_m = double(rays.size()) / lab / 1e6, emb_m = double(rays.size()) / emb / 1e6;
+            std::printf("  %-8s %7d %12.2f %12.2f %7.2f\n", kind, threads, lab_m, emb_m, lab_m / emb_m);
+            std::fflush(stdout);
+        }
+    }
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    int rounds = 3, size = 512;
+    bool procedural = true;
+    std::vector<Input> inputs;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        try {
+            if (a == "--rounds" && i + 1 < argc) {
+                rounds = std::max(1, std::atoi(argv[++i]));
+            } else if (a == "--size" && i + 1 < argc) {
+                size = std::max(16, std::atoi(argv[++i]));
+            } else if (a == "--no-procedural") {
+                procedural = false;
+            } else if (!a.empty() && a[0] != '-') {
+                inputs.push_back({a.substr(a.find_last_of('/') + 1), load_obj(a)});
+            } else {
+                std::fprintf(stderr, "usage: bench_embree [--rounds N] [--size S] [--no-procedural] [MESH.obj ...]\n");
+                return 2;
+            }
+        } catch (const std::exception& e) {
+            std::fprintf(stderr, "bench_embree: %s\n", e.what());
+            return 2;
+        }
+    }
+    if (procedural) {
+        inputs.insert(inputs.begin(), {{"terrain 10^5", terrain(Vec3(0), 10, 1.5, 224)},
+                                       {"terrain 10^6", terrain(Vec3(0), 10, 1.5, 707)},
+                                       {"soup 10^6", triangle_soup(Vec3(0), 10, 0.1, 1000000, 3)}});
+    }
+    std::printf("lab: Real=%s, fast path (two-level binary BVH, scalar); Embree %d.%d.%d, rtcIntersect1/rtcOccluded1\n",
+                real_name(), RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH);
+    for (const Input& in : inputs) measure(in, size, rounds);
+    return 0;
+}

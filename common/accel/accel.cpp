@@ -1,0 +1,98 @@
+#include "accel/accel.hpp"
+
+#include <chrono>
+
+namespace rt {
+
+const char* accel_name(AccelKind kind) {
+    switch (kind) {
+        case AccelKind::none:
+            return "none";
+        case AccelKind::bvh_sort:
+            return "bvh-sort";
+        case AccelKind::bvh_midpoint:
+            return "bvh-midpoint";
+        case AccelKind::bvh_sah:
+            return "bvh-sah";
+        case AccelKind::fast:
+            return "fast";
+    }
+    return "?";
+}
+
+std::optional<AccelKind> accel_kind(const std::string& name) {
+    for (AccelKind k : kAccelKinds)
+        if (name == accel_name(k)) return k;
+    return std::nullopt;
+}
+
+std::string accel_names() {
+    std::string out;
+    for (AccelKind k : kAccelKinds) out += std::string(out.empty() ? "" : ", ") + accel_name(k);
+    return out;
+}
+
+bool BruteForce::hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
+    HitRecord best = no_hit_before(interval.max);
+    bool found = false;
+    for (const Primitive& p : primitives_)
+        if (hit_closer(surfaces, p, ray, Interval{interval.min, best.t}, best)) found = true;
+    traversal_tally.items += primitives_.size();
+    if (found) rec = best;
+    return found;
+}
+
+bool BruteForce::occluded(const SurfaceList& surfaces, const Ray& ray, Interval interval) const {
+    for (std::size_t k = 0; k < primitives_.size(); ++k)
+        if (rt::occluded(surfaces, primitives_[k], ray, interval)) {
+            traversal_tally.items += k + 1;
+            return true;
+        }
+    traversal_tally.items += primitives_.size();
+    return false;
+}
+
+namespace {
+
+std::variant<BruteForce, Bvh, FastBvh> make(const SurfaceList& surfaces, AccelKind kind) {
+    switch (kind) {
+        case AccelKind::bvh_sort:
+            return Bvh(surfaces, BvhBuild::sorted);
+        case AccelKind::bvh_midpoint:
+            return Bvh(surfaces, BvhBuild::midpoint);
+        case AccelKind::bvh_sah:
+            return Bvh(surfaces, BvhBuild::sah);
+        case AccelKind::fast:
+            return FastBvh(surfaces);
+        case AccelKind::none:
+            break;
+    }
+    return BruteForce(surfaces);
+}
+
+}  // namespace
+
+Accel::Accel(const SurfaceList& surfaces, AccelKind kind)
+    : impl_([&] {
+          const auto start = std::chrono::steady_clock::now();
+          auto impl = make(surfaces, kind);
+          info_.build_seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+          return impl;
+      }()) {
+    info_.kind = kind;
+    if (const auto* b = std::get_if<BruteForce>(&impl_)) {
+        info_.primitives = b->primitive_count();
+    } else if (const auto* b = std::get_if<Bvh>(&impl_)) {
+        info_.primitives = b->primitive_count();
+        info_.nodes = b->node_count();
+        info_.bytes = b->memory_bytes();
+        info_.depth = b->depth();
+    } else if (const auto* f = std::get_if<FastBvh>(&impl_)) {
+        info_.primitives = primitives_of(surfaces).size();
+        info_.nodes = f->node_count(surfaces);
+        info_.bytes = f->memory_bytes(surfaces);
+        info_.depth = f->upper().depth;
+    }
+}
+
+}  // namespace rt

@@ -1,0 +1,70 @@
+#pragma once
+// The scene's search structure, chosen by --accel or a scene file's "accel" (book §10.6):
+//   none          every primitive, one after the other (brute force: the reference)
+//   bvh-sort      the course's BVH, sorted build (exercises 10.1, 10.2, 10.4)
+//   bvh-midpoint  the course's BVH, midpoint build (exercises 10.1, 10.3, 10.4)
+//   bvh-sah       the course's BVH over a surface-area-heuristic tree (exercises 10.1, 10.4)
+//   fast          the two-level flat BVH (the default; library code only)
+// All return the same closest hit (t, surface and primitive) and the same any-hit answer.
+#include "accel/bvh.hpp"
+#include "accel/fast_bvh.hpp"
+#include "accel/primitive.hpp"
+
+#include <optional>
+#include <string>
+#include <variant>
+
+namespace rt {
+
+enum class AccelKind { none, bvh_sort, bvh_midpoint, bvh_sah, fast };
+inline constexpr AccelKind kAccelKinds[] = {AccelKind::none, AccelKind::bvh_sort, AccelKind::bvh_midpoint,
+                                            AccelKind::bvh_sah, AccelKind::fast};
+
+const char* accel_name(AccelKind kind);
+// The kind a name means, or nothing for an unknown name.
+std::optional<AccelKind> accel_kind(const std::string& name);
+// "none, bvh-sort, ...": for messages.
+std::string accel_names();
+
+// Brute force over primitives: what every structure must agree with.
+class BruteForce {
+public:
+    explicit BruteForce(const SurfaceList& surfaces) : primitives_(primitives_of(surfaces)) {}
+    bool hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const;
+    bool occluded(const SurfaceList& surfaces, const Ray& ray, Interval interval) const;
+    std::size_t primitive_count() const { return primitives_.size(); }
+
+private:
+    std::vector<Primitive> primitives_;
+};
+
+// What --stats says about a structure.
+struct AccelInfo {
+    AccelKind kind = AccelKind::none;
+    double build_seconds = 0;
+    std::size_t primitives = 0;  // what the structure sorts (a mesh: its triangles)
+    std::size_t nodes = 0;
+    std::size_t bytes = 0;
+    int depth = 0;
+};
+
+class Accel {
+public:
+    // Builds the structure over the surfaces. The queries take the same list (or an equal
+    // copy: a copied Scene) again, so nothing here points into a Scene that may move.
+    Accel(const SurfaceList& surfaces, AccelKind kind);
+
+    bool hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
+        return std::visit([&](const auto& a) { return a.hit(surfaces, ray, interval, rec); }, impl_);
+    }
+    bool occluded(const SurfaceList& surfaces, const Ray& ray, Interval interval) const {
+        return std::visit([&](const auto& a) { return a.occluded(surfaces, ray, interval); }, impl_);
+    }
+    const AccelInfo& info() const { return info_; }
+
+private:
+    AccelInfo info_;  // before impl_: building impl_ records its time here
+    std::variant<BruteForce, Bvh, FastBvh> impl_;
+};
+
+}  // namespace rt

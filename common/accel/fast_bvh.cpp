@@ -1,0 +1,62 @@
+#include "accel/fast_bvh.hpp"
+
+#include "accel/primitive.hpp"
+
+#include <set>
+
+namespace rt {
+
+FastBvh::FastBvh(const SurfaceList& surfaces) {
+    std::vector<Box> boxes;
+    boxes.reserve(surfaces.size());
+    for (const Surface& s : surfaces.surfaces()) boxes.push_back(s.bounding_box());
+    bvh_ = build_bvh(boxes, 2);
+}
+
+bool FastBvh::hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
+    HitRecord best = no_hit_before(interval.max);
+    const bool found = closest_hit(bvh_, ray, interval, [&](std::uint32_t k, Interval& iv) {
+        if (!hit_closer(surfaces[SurfaceId(bvh_.items[k])], ray, iv, best)) return false;
+        iv.max = best.t;
+        return true;
+    });
+    if (found) rec = best;
+    return found;
+}
+
+bool FastBvh::occluded(const SurfaceList& surfaces, const Ray& ray, Interval interval) const {
+    return any_hit(bvh_, ray, interval,
+                   [&](std::uint32_t k, Interval& iv) { return surfaces[SurfaceId(bvh_.items[k])].occluded(ray, iv); });
+}
+
+namespace {
+
+// Every distinct mesh's BVH below the surfaces, instances included, once each.
+template <class F>
+void for_each_mesh_accel(const SurfaceList& surfaces, F&& f) {
+    std::set<const MeshAccel*> seen;
+    const auto visit = [&](const Shape& shape, const auto& self) -> void {
+        if (const auto* mesh = std::get_if<Mesh>(&shape)) {
+            if (seen.insert(&mesh->accel()).second) f(mesh->accel());
+        } else if (const auto* instance = std::get_if<Instance>(&shape)) {
+            self(instance->base(), self);
+        }
+    };
+    for (const Surface& s : surfaces.surfaces()) visit(s.shape, visit);
+}
+
+}  // namespace
+
+std::size_t FastBvh::memory_bytes(const SurfaceList& surfaces) const {
+    std::size_t bytes = bvh_.memory_bytes();
+    for_each_mesh_accel(surfaces, [&](const MeshAccel& a) { bytes += a.memory_bytes(); });
+    return bytes;
+}
+
+std::size_t FastBvh::node_count(const SurfaceList& surfaces) const {
+    std::size_t nodes = bvh_.nodes.size();
+    for_each_mesh_accel(surfaces, [&](const MeshAccel& a) { nodes += a.bvh.nodes.size(); });
+    return nodes;
+}
+
+}  // namespace rt

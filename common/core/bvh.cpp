@@ -1,0 +1,158 @@
+#include "core/bvh.hpp"
+
+#include <algorithm>
+#include <array>
+#include <bit>
+#include <cmath>
+
+namespace rt {
+
+namespace {
+
+// Float bounds that contain the Real ones: a box may only grow when it is stored.
+float round_down(Real x) {
+    float f = float(x);
+    if (Real(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
+    return f;
+}
+float round_up(Real x) {
+    float f = float(x);
+    if (Real(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
+    return f;
+}
+
+Real half_area(const Box& b) {
+    const Vec3 e = b.max - b.min;
+    return e.x * e.y + e.y * e.z + e.z * e.x;
+}
+
+constexpr int kBins = 16;
+
+struct Builder {
+    std::span<const Box> boxes;
+    std::vector<Vec3> centres;
+    FlatBvh& out;
+    unsigned max_leaf;
+
+    void leaf(BvhNode& node, std::uint32_t begin, std::uint32_t end) {
+        node.first = begin;
+        node.count = end - begin;
+    }
+
+    // Where to split items [begin, end) with the surface-area heuristic, or end for "make a
+    // leaf": the expected cost of a split, 1 box test plus each side's items weighted by
+    // the chance (area ratio) that a ray through the parent meets that side, against the
+    // cost of testing all items here.
+    std::uint32_t sah_split(std::uint32_t begin, std::uint32_t end, const Box& bounds, const Box& centre_bounds) {
+        const std::uint32_t n = end - begin;
+        int best_axis = -1, best_bin = 0;
+        Real best_cost = kInfinity;
+        for (int a = 0; a < 3; ++a) {
+            const Real lo = centre_bounds.min[a], extent = centre_bounds.max[a] - lo;
+            if (!(extent > 0)) continue;
+            std::array<Box, kBins> bin_box{};
+            std::array<std::uint32_t, kBins> bin_count{};
+            const Real scale = kBins / extent;
+            for (std::uint32_t k = begin; k < end; ++k) {
+                const std::uint32_t item = out.items[k];
+                const int b = std::min(kBins - 1, int((centres[item][a] - lo) * scale));
+                bin_box[b].expand(boxes[item]);
+                ++bin_count[b];
+            }
+            // Sweep from the right to know each right side, then from the left.
+            std::array<Real, kBins> right_area{};
+            std::array<std::uint32_t, kBins> right_count{};
+            Box right;
+            std::uint32_t count = 0;
+            for (int b = kBins - 1; b > 0; --b) {
+                right.expand(bin_box[b]);
+                count += bin_count[b];
+                right_area[b] = count ? half_area(right) : 0;
+                right_count[b] = count;
+            }
+            Box left;
+            count = 0;
+            for (int b = 0; b < kBins - 1; ++b) {
+                left.expand(bin_box[b]);
+                count += bin_count[b];
+                if (count == 0 || right_count[b + 1] == 0) continue;
+                const Real cost = half_area(left) * count + right_area[b + 1] * right_count[b + 1];
+                if (cost < best_cost) {
+                    best_cost = cost;
+                    best_axis = a;
+                    best_bin = b;
+                }
+            }
+        }
+        if (best_axis < 0) return end;  // every centre in one place: no plane separates them
+        const Real parent = half_area(bounds);
+        const Real split_cost = 1 + (parent > 0 ? best_cost / parent : Real(n));
+        if (n <= max_leaf && split_cost >= Real(n)) return end;
+        const Real lo = centre_bounds.min[best_axis];
+        const Real scale = kBins / (centre_bounds.max[best_axis] - lo);
+        const auto mid = std::partition(out.items.begin() + begin, out.items.begin() + end, [&](std::uint32_t item) {
+            return std::min(kBins - 1, int((centres[item][best_axis] - lo) * scale)) <= best_bin;
+        });
+        return std::uint32_t(mid - out.items.begin());
+    }
+
+    // Half the items on each side of the median centre along the widest axis: what a build
+    // falls back to near the depth limit, and for items whose centres coincide.
+    std::uint32_t median_split(std::uint32_t begin, std::uint32_t end, const Box& centre_bounds) {
+        const Vec3 e = centre_bounds.max - centre_bounds.min;
+        const int a = e.x >= e.y && e.x >= e.z ? 0 : (e.y >= e.z ? 1 : 2);
+        const std::uint32_t mid = begin + (end - begin) / 2;
+        std::nth_element(out.items.begin() + begin, out.items.begin() + mid, out.items.begin() + end,
+                         [&](std::uint32_t i, std::uint32_t j) { return centres[i][a] < centres[j][a]; });
+        return mid;
+    }
+
+    void build(std::uint32_t at, std::uint32_t begin, std::uint32_t end, int depth) {
+        out.depth = std::max(out.depth, depth);
+        Box bounds, centre_bounds;
+        for (std::uint32_t k = begin; k < end; ++k) {
+            bounds.expand(boxes[out.items[k]]);
+            centre_bounds.expand(centres[out.items[k]]);
+        }
+        for (int a = 0; a < 3; ++a) {
+            out.nodes[at].lo[a] = round_down(bounds.min[a]);
+            out.nodes[at].hi[a] = round_up(bounds.max[a]);
+        }
+        const std::uint32_t n = end - begin;
+        if (n == 1) return leaf(out.nodes[at], begin, end);
+        // Near the depth limit only halving is allowed: bit_width(n) more levels reach one item.
+        const bool must_halve = depth + int(std::bit_width(n)) >= kMaxBvhDepth;
+        std::uint32_t mid =
+            must_halve ? median_split(begin, end, centre_bounds) : sah_split(begin, end, bounds, centre_bounds);
+        if (mid == end) {
+            if (n <= max_leaf) return leaf(out.nodes[at], begin, end);
+            mid = median_split(begin, end, centre_bounds);
+        }
+        const auto left = std::uint32_t(out.nodes.size());
+        out.nodes.push_back({});
+        out.nodes.push_back({});
+        out.nodes[at].first = left;
+        out.nodes[at].count = 0;
+        build(left, begin, mid, depth + 1);
+        build(left + 1, mid, end, depth + 1);
+    }
+};
+
+}  // namespace
+
+FlatBvh build_bvh(std::span<const Box> boxes, unsigned max_leaf) {
+    FlatBvh bvh;
+    if (boxes.empty()) return bvh;
+    Builder b{boxes, {}, bvh, std::max(1u, max_leaf)};
+    b.centres.reserve(boxes.size());
+    for (const Box& box : boxes) b.centres.push_back((box.min + box.max) * Real(0.5));
+    bvh.items.resize(boxes.size());
+    for (std::uint32_t k = 0; k < bvh.items.size(); ++k) bvh.items[k] = k;
+    bvh.nodes.reserve(2 * boxes.size());
+    bvh.nodes.push_back({});
+    b.build(0, 0, std::uint32_t(boxes.size()), 0);
+    bvh.nodes.shrink_to_fit();
+    return bvh;
+}
+
+}  // namespace rt

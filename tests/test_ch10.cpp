@@ -1,0 +1,328 @@
+// Chapter 10: bounding boxes and the BVH (course §9.9.1-9.9.2). The slab test on the rays
+// that break naive versions (+0 and -0 directions, origins on faces and edges, flat boxes),
+// the course's two builds on worked examples, and every structure against brute force:
+// the same closest hit (t, surface and triangle) and the same any-hit answer, on random rays
+// and on rays aimed exactly at a closed mesh's shared edges and vertices.
+#include "accel/accel.hpp"
+#include "geometry/procedural.hpp"
+#include "io/scene_file.hpp"
+#include "render/render.hpp"
+#include "support.hpp"
+#include "support/source_dir.hpp"
+
+#include <pcg_random.hpp>
+
+#include <cmath>
+#include <map>
+#include <memory>
+#include <numeric>
+#include <random>
+
+using namespace rt;
+
+namespace {
+
+const std::string kScenes = rt::test::source_dir() + "/chapters/ch10_bvh/scenes/";
+const Box kUnit{Vec3(0), Vec3(1)};
+
+struct Rng {
+    pcg32 gen{2024};
+    Real operator()(Real lo, Real hi) { return std::uniform_real_distribution<Real>(lo, hi)(gen); }
+    Vec3 vec(Real lo, Real hi) {
+        const Real x = (*this)(lo, hi), y = (*this)(lo, hi), z = (*this)(lo, hi);
+        return Vec3(x, y, z);
+    }
+};
+
+// A scene of every kind of primitive: spheres, a polygon, a lone triangle, a random soup,
+// a closed icosphere and two instances of it (one mirrored).
+SurfaceList mixed_scene() {
+    SurfaceList list;
+    Rng rng;
+    for (int k = 0; k < 60; ++k) list.add(Sphere(rng.vec(-6, 6), rng(0.1, 0.8)));
+    list.add(Polygon({Vec3(-8, -3, -8), Vec3(-8, -3, 8), Vec3(8, -3, 8), Vec3(8, -3, -8)}));
+    list.add(Triangle(Vec3(-2, 4, 0), Vec3(2, 4, 0.5), Vec3(0, 6, -1)));
+    list.add(Mesh(triangle_soup(Vec3(1, 1, 1), 6, 0.6, 1500, 7)));
+    const Mesh ball(icosphere(Vec3(0), 1, 3));
+    list.add(ball);
+    const auto base = std::make_shared<const Shape>(ball);
+    list.add(Instance(base, Affine::scale(Vec3(1.5, 0.7, 1)).then(Affine::translate(Vec3(3, 2, -4)))));
+    list.add(Instance(base, Affine::scale(Vec3(-1, 1, 1)).then(Affine::translate(Vec3(-4, 1, 3)))));
+    return list;
+}
+
+constexpr AccelKind kStructures[] = {AccelKind::bvh_sort, AccelKind::bvh_midpoint, AccelKind::bvh_sah, AccelKind::fast};
+
+// Every structure's closest hit and any-hit answer against brute force, for these rays.
+// Returns the number of disagreements (the first is CHECKed in full).
+int disagreements(const SurfaceList& list, const std::vector<Ray>& rays, const std::vector<Interval>& intervals) {
+    const Accel brute(list, AccelKind::none);
+    int failures = 0;
+    for (AccelKind kind : kStructures) {
+        const Accel accel(list, kind);
+        CAPTURE(accel_name(kind));
+        for (std::size_t k = 0; k < rays.size(); ++k) {
+            const Ray& ray = rays[k];
+            const Interval iv = intervals[k];
+            HitRecord want, got;
+            const bool want_hit = brute.hit(list, ray, iv, want), got_hit = accel.hit(list, ray, iv, got);
+            CAPTURE(k);
+            RT_CHECK_FIRST(failures, got_hit == want_hit);
+            if (got_hit && want_hit) {
+                RT_CHECK_FIRST(failures, got.t == want.t);
+                RT_CHECK_FIRST(failures, got.surface == want.surface);
+                RT_CHECK_FIRST(failures, got.primitive == want.primitive);
+            }
+            RT_CHECK_FIRST(failures, accel.occluded(list, ray, iv) == brute.occluded(list, ray, iv));
+        }
+    }
+    return failures;
+}
+
+}  // namespace
+
+TEST_SUITE("ch10") {
+TEST_CASE("10.1 hit_box: axis-parallel rays with +0 and -0 components") {
+    const Real zero = 0, minus_zero = -zero;
+    for (const Real x : {zero, minus_zero})
+        for (const Real y : {zero, minus_zero}) {
+            CAPTURE(std::signbit(x));
+            CAPTURE(std::signbit(y));
+            // Straight through the box along z, from either side.
+            CHECK(hit_box(kUnit, Ray{Vec3(0.5, 0.5, -1), Vec3(x, y, 1)}, Interval{}));
+            CHECK(hit_box(kUnit, Ray{Vec3(0.5, 0.5, 2), Vec3(x, y, -1)}, Interval{}));
+            // Beside the box: x = 2 lies outside the x slab whatever the sign of the zero.
+            CHECK_FALSE(hit_box(kUnit, Ray{Vec3(2, 0.5, -1), Vec3(x, y, 1)}, Interval{}));
+            CHECK_FALSE(hit_box(kUnit, Ray{Vec3(0.5, -1, -1), Vec3(x, y, 1)}, Interval{}));
+            // Pointing away from the box.
+            CHECK_FALSE(hit_box(kUnit, Ray{Vec3(0.5, 0.5, -1), Vec3(x, y, -1)}, Interval{}));
+        }
+}
+
+TEST_CASE("10.1 hit_box: rays starting on a face or an edge, and rays lying in a face's plane") {
+    CHECK(hit_box(kUnit, Ray{Vec3(0, 0.5, 0.5), Vec3(1, 0, 0)}, Interval{}));  // on a face, inwards
+    CHECK(hit_box(kUnit, Ray{Vec3(0, 0, 0.5), Vec3(1, 1, 0)}, Interval{}));    // on an edge, inwards
+    CHECK(hit_box(kUnit, Ray{Vec3(0, 0.5, -1), Vec3(0, 0, 1)}, Interval{}));   // in the plane x = 0
+    CHECK(hit_box(kUnit, Ray{Vec3(0, 0, -1), Vec3(0, 0, 1)}, Interval{}));     // along an edge
+    CHECK(hit_box(kUnit, Ray{Vec3(1, 1, 1), Vec3(1, 1, 1)}, Interval{}));      // leaving from a corner: t = 0
+    CHECK_FALSE(hit_box(kUnit, Ray{Vec3(1, 1, 1), Vec3(1, 1, 1)}, Interval{1e-3, kInfinity}));
+    // The interval counts: the box lies between t = 1 and t = 2 on this ray.
+    const Ray r{Vec3(0.5, 0.5, -1), Vec3(0, 0, 1)};
+    CHECK(hit_box(kUnit, r, Interval{0, 1}));
+    CHECK(hit_box(kUnit, r, Interval{1.5, 1.6}));
+    CHECK(hit_box(kUnit, r, Interval{2, 5}));
+    CHECK_FALSE(hit_box(kUnit, r, Interval{0, 0.99}));
+    CHECK_FALSE(hit_box(kUnit, r, Interval{2.01, 5}));
+}
+
+TEST_CASE("10.1 hit_box: a box of zero thickness (a flat quad's) and NaN") {
+    const Box flat{Vec3(0, 0, 0), Vec3(1, 0, 1)};
+    CHECK(hit_box(flat, Ray{Vec3(0.5, 1, 0.5), Vec3(0, -1, 0)}, Interval{}));
+    CHECK(hit_box(flat, Ray{Vec3(0.5, -1, 0.5), Vec3(0.1, 1, -0.2)}, Interval{}));
+    CHECK(hit_box(flat, Ray{Vec3(-1, 0, 0.5), Vec3(1, 0, 0)}, Interval{}));  // in its plane
+    CHECK_FALSE(hit_box(flat, Ray{Vec3(-1, 0.1, 0.5), Vec3(1, 0, 0)}, Interval{}));
+    CHECK_FALSE(hit_box(flat, Ray{Vec3(2, 1, 0.5), Vec3(0, -1, 0)}, Interval{}));
+    // A NaN far end is never a hit.
+    const Real nan = std::numeric_limits<Real>::quiet_NaN();
+    CHECK_FALSE(hit_box(kUnit, Ray{Vec3(0.5, 0.5, -1), Vec3(0, 0, 1)}, Interval{0, nan}));
+    CHECK_FALSE(hit_box(Box{}, Ray{Vec3(0.5, 0.5, -1), Vec3(0, 0, 1)}, Interval{}));  // the empty box
+}
+
+TEST_CASE("10.1 hit_box agrees with the library's cull (might_hit) on 10^5 random rays and boxes") {
+    Rng rng;
+    int failures = 0, hits = 0;
+    for (int k = 0; k < 100000; ++k) {
+        Box b;
+        b.expand(rng.vec(-2, 2));
+        b.expand(rng.vec(-2, 2));
+        Vec3 d = rng.vec(-1, 1);
+        if (k % 4 == 0) d[k / 4 % 3] = (k & 8) ? Real(0) : -Real(0);  // axis-parallel a quarter of the time
+        const Ray ray{rng.vec(-3, 3), d};
+        const Interval iv{k % 3 == 0 ? rng(0, 2) : Real(0), k % 5 == 0 ? rng(0, 4) : kInfinity};
+        const bool want = might_hit(b, ray, iv);
+        hits += want;
+        CAPTURE(k);
+        RT_CHECK_FIRST(failures, hit_box(b, ray, iv) == want);
+    }
+    CHECK(failures == 0);
+    CHECK(hits > 2000);  // the sample exercises both answers
+    CHECK(hits < 90000);
+}
+
+TEST_CASE("10.2 build_sorted: the course's halving by sorted centres, cycling the axes") {
+    // Four unit boxes with centres at x = 3, 1, 0, 2; y increasing the other way.
+    std::vector<Box> boxes;
+    for (const Real x : {3, 1, 0, 2}) boxes.push_back(Box{Vec3(x - 0.5, 3 - x, 0), Vec3(x + 0.5, 4 - x, 1)});
+    BvhBuilder b(boxes);
+    std::vector<std::uint32_t> order{0, 1, 2, 3};
+    const BvhRef root = build_sorted(b, order, 0);
+    REQUIRE_FALSE(is_primitive(root));
+    const auto nodes = b.take_nodes();
+    REQUIRE(nodes.size() == 3);  // n - 1 nodes for n primitives, one a leaf
+    const CourseBvhNode& top = nodes[root];
+    // Sorted by x: 2 (x = 0), 1 (x = 1) | 3 (x = 2), 0 (x = 3); each half then sorted by y.
+    const CourseBvhNode& left = nodes[top.left];
+    const CourseBvhNode& right = nodes[top.right];
+    CHECK(left.box.min.x == Real(-0.5));
+    CHECK(left.box.max.x == Real(1.5));
+    CHECK(right.box.min.x == Real(1.5));
+    CHECK(right.box.max.x == Real(3.5));
+    // Within the left half, the lower y (primitive 1, y in [2, 3]) comes first.
+    CHECK(left.left == b.primitive(1));
+    CHECK(left.right == b.primitive(2));
+    CHECK(right.left == b.primitive(0));
+    CHECK(right.right == b.primitive(3));
+    CHECK(top.box.min == Vec3(-0.5, 0, 0));
+    CHECK(top.box.max == Vec3(3.5, 4, 1));
+}
+
+TEST_CASE("10.2 build_sorted is balanced: depth ceil(log2 n), as the course's analysis says") {
+    for (const int n : {1, 2, 3, 5, 8, 100, 1000, 1025}) {
+        std::vector<Box> boxes;
+        Rng rng;
+        for (int k = 0; k < n; ++k) {
+            const Vec3 c = rng.vec(-10, 10);
+            boxes.push_back(Box{c - Real(0.1), c + Real(0.1)});
+        }
+        BvhBuilder b(boxes);
+        std::vector<std::uint32_t> order(static_cast<std::size_t>(n));
+        std::iota(order.begin(), order.end(), 0u);
+        const BvhRef root = build_sorted(b, order, 0);
+        const auto nodes = b.take_nodes();
+        CAPTURE(n);
+        CHECK(nodes.size() == std::size_t(n - 1));
+        // Depth of every primitive below the root.
+        int deepest = 0;
+        std::vector<std::pair<BvhRef, int>> stack{{root, 0}};
+        while (!stack.empty()) {
+            const auto [ref, d] = stack.back();
+            stack.pop_back();
+            deepest = std::max(deepest, d);
+            if (is_primitive(ref)) continue;
+            stack.push_back({nodes[ref].left, d + 1});
+            stack.push_back({nodes[ref].right, d + 1});
+        }
+        CHECK(deepest == int(std::ceil(std::log2(double(n)))));
+    }
+}
+
+TEST_CASE("10.3 build_midpoint: split at the middle of the box, halve when all centres fall on one side") {
+    // Centres at x = 0, 0.1, 0.2 and 10: the middle of the box [-0.1, 10.1] is 5, so the
+    // three close ones go left and the far one right, a split by count would not do that.
+    std::vector<Box> boxes;
+    for (const Real x : {10.0, 0.0, 0.2, 0.1}) boxes.push_back(Box{Vec3(x - 0.1, 0, 0), Vec3(x + 0.1, 1, 1)});
+    BvhBuilder b(boxes);
+    std::vector<std::uint32_t> order{0, 1, 2, 3};
+    const BvhRef root = build_midpoint(b, order, 0);
+    auto nodes = b.take_nodes();
+    REQUIRE(nodes.size() == 3);
+    const CourseBvhNode& top = nodes[root];
+    CHECK(top.right == b.primitive(0));
+    REQUIRE_FALSE(is_primitive(top.left));
+    CHECK(nodes[top.left].box.max.x == doctest::Approx(0.3));
+
+    // Identical boxes: no plane separates their centres, so the list is halved.
+    std::vector<Box> same(5, Box{Vec3(0), Vec3(1)});
+    BvhBuilder b2(same);
+    std::vector<std::uint32_t> order2{0, 1, 2, 3, 4};
+    const BvhRef root2 = build_midpoint(b2, order2, 1);
+    nodes = b2.take_nodes();
+    CHECK(nodes.size() == 4);
+    REQUIRE_FALSE(is_primitive(root2));
+}
+
+TEST_CASE("10.4 every structure returns brute force's hit on 10^5 random rays (t, surface and triangle)") {
+    const SurfaceList list = mixed_scene();
+    Rng rng;
+    std::vector<Ray> rays;
+    std::vector<Interval> intervals;
+    for (int k = 0; k < 25000; ++k) {
+        // From outside towards the middle, from inside in any direction, and short segments.
+        const Vec3 o = k % 2 ? rng.vec(-12, 12) : rng.vec(-4, 4);
+        const Vec3 target = rng.vec(-5, 5);
+        rays.push_back(Ray{o, k % 3 ? target - o : rng.vec(-1, 1)});
+        intervals.push_back(k % 7 == 0 ? Interval{rng(0, 0.5), rng(0.5, 1.5)} : Interval{});
+    }
+    CHECK(disagreements(list, rays, intervals) == 0);  // 4 structures x 25,000 rays
+}
+
+TEST_CASE("10.4 rays aimed exactly at a closed mesh's shared edges and vertices are never lost") {
+    // Rays through the vertices and edge midpoints of an icosphere, from outside: each hits
+    // (the mesh is closed and the triangle test watertight), and no structure loses one to
+    // a box test's rounding or picks another triangle than brute force at a tie.
+    SurfaceList list;
+    const MeshData data = icosphere(Vec3(0.3, -0.2, 0.1), 2, 3);
+    list.add(Mesh(data));
+    Rng rng;
+    const Vec3 centre(0.3, -0.2, 0.1);
+    std::vector<Ray> rays, crossing;
+    std::vector<Interval> intervals;
+    for (const auto& t : data.triangles)
+        for (int e = 0; e < 3; ++e) {
+            const Vec3 a = data.positions[t[e]], b = data.positions[t[(e + 1) % 3]];
+            for (const Vec3& p : {a, (a + b) * Real(0.5)}) {
+                // From anywhere (grazing rays included: they test ties), and from outside
+                // roughly along the normal, so the ray crosses the surface there.
+                const Vec3 o = rng.vec(-9, 9) * Real(1.5);
+                rays.push_back(Ray{o, p - o});
+                intervals.push_back(Interval{});
+                const Vec3 q = centre + (p - centre) * rng(1.5, 4) + rng.vec(-0.5, 0.5);
+                crossing.push_back(Ray{q, p - q});
+                rays.push_back(crossing.back());
+                intervals.push_back(Interval{});
+            }
+        }
+    CHECK(disagreements(list, rays, intervals) == 0);
+    const Accel fast(list, AccelKind::fast);
+    int lost = 0;
+    for (const Ray& r : crossing) {
+        HitRecord rec;
+        if (!fast.hit(list, r, Interval{}, rec)) ++lost;
+    }
+    CHECK(lost == 0);
+}
+
+TEST_CASE("10.4 the chapter's scenes render the same image with every structure, bit for bit") {
+    RenderOptions o;
+    o.width = 48;
+    o.height = 36;
+    o.threads = 2;
+    for (const char* name : {"spheres", "soup"}) {
+        Scene scene = load_scene_file(kScenes + name + ".json");
+        scene.build_accel(AccelKind::none);
+        const Image want = render(scene, o).image;
+        for (AccelKind kind : kStructures) {
+            scene.build_accel(kind);
+            const RenderResult got = render(scene, o);
+            CAPTURE(name);
+            CAPTURE(accel_name(kind));
+            int differ = 0;
+            for (int y = 0; y < o.height; ++y)
+                for (int x = 0; x < o.width; ++x) differ += got.image.at(x, y) != want.at(x, y);
+            CHECK(differ == 0);
+        }
+    }
+}
+
+TEST_CASE("10.4 a tree tests far fewer primitives per ray than brute force, the SAH tree fewest") {
+    // The course's promise, sub-linear search, measured in work rather than time: the same
+    // on every machine.
+    Scene scene = load_scene_file(kScenes + "spheres.json");
+    RenderOptions o;
+    o.width = 64;
+    o.height = 48;
+    std::map<AccelKind, double> work;
+    for (AccelKind kind : {AccelKind::none, AccelKind::bvh_sort, AccelKind::bvh_midpoint, AccelKind::bvh_sah}) {
+        scene.build_accel(kind);
+        const RayCounters c = render(scene, o).counters;
+        work[kind] = double(c.nodes_visited + c.primitives_tested) / double(c.total());
+    }
+    CAPTURE(work[AccelKind::none]);
+    CAPTURE(work[AccelKind::bvh_sort]);
+    CAPTURE(work[AccelKind::bvh_sah]);
+    CHECK(work[AccelKind::none] > 500);  // 578 primitives, and any-hit rays stop early
+    CHECK(work[AccelKind::bvh_sort] < work[AccelKind::none] / 5);
+    CHECK(work[AccelKind::bvh_midpoint] < work[AccelKind::none] / 5);
+    CHECK(work[AccelKind::bvh_sah] <= work[AccelKind::bvh_sort]);
+}
+}
