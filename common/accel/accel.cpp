@@ -28,7 +28,10 @@ std::optional<AccelKind> accel_kind(const std::string& name) {
 
 std::string accel_names() {
     std::string out;
-    for (AccelKind k : kAccelKinds) out += std::string(out.empty() ? "" : ", ") + accel_name(k);
+    for (AccelKind k : kAccelKinds) {
+        if (!out.empty()) out += ", ";
+        out += accel_name(k);
+    }
     return out;
 }
 
