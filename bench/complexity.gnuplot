@@ -2,20 +2,21 @@
 # of triangles, log-log, one line per structure, for each input.
 #   gnuplot -e "csv='complexity.csv'; out='DIR'" bench/complexity.gnuplot
 set datafile separator ','
-set terminal pngcairo size 900,420 font 'sans,10'
+set terminal pngcairo size 960,420 font 'sans,10'
 set logscale xy
 set grid
-set key outside right
+set key top left
+set format x '10^{%L}'
+set format y '10^{%L}'
 set xlabel 'triangles'
 structures = 'none bvh-sort bvh-midpoint bvh-sah fast'
+rows(input, s) = sprintf("< awk -F, '$1 == \"%s\" && $3 == \"%s\"' %s", input, s, csv)
 do for [input in 'terrain soup'] {
     set output out.'/complexity-'.input.'.png'
     set multiplot layout 1,2 title input
     set ylabel 'ns per ray'
-    plot for [s in structures] csv using (strcol(1) eq input && strcol(3) eq s ? $2 : 1/0):5 \
-        with linespoints title s
+    plot for [i=1:5] rows(input, word(structures, i)) using 2:5 with linespoints lc i pt i title word(structures, i)
     set ylabel 'build seconds'
-    plot for [s in structures] csv using (strcol(1) eq input && strcol(3) eq s && s ne 'none' ? $2 : 1/0):4 \
-        with linespoints title s
+    plot for [i=2:5] rows(input, word(structures, i)) using 2:4 with linespoints lc i pt i title word(structures, i)
     unset multiplot
 }

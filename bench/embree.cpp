@@ -146,7 +146,7 @@ void measure(const Input& input, int size, int rounds) {
     const Box box = mesh.box();
     const Vec3 centre = (box.min + box.max) * Real(0.5), extent = box.max - box.min;
     const Real reach = glm::length(extent);
-    const Vec3 eye = centre + Vec3(0.6, 0.5, 0.9) * reach;
+    const Vec3 eye = centre + Vec3(0.5, 0.8, 0.7) * reach;
     const Vec3 w = glm::normalize(eye - centre), u = glm::normalize(glm::cross(Vec3(0, 1, 0), w)), v = glm::cross(w, u);
     std::vector<Ray> primary;
     primary.reserve(std::size_t(size) * std::size_t(size));
