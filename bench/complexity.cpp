@@ -1,6 +1,7 @@
-// The course's exercise 3 made real (book §10.7): how build time and time per ray grow with
-// the number of triangles, for brute force and each structure, on procedural meshes
-// (terrains) and on triangle soups, 10^2 ... 10^6 triangles.
+// The course's exercise 3 made real (book §10.7, §11.5): how build time and time per ray grow
+// with the number of triangles, for brute force and each structure, on procedural meshes
+// (terrains), on triangle soups, 10^2 ... 10^6 triangles, and on the teapot in a stadium (a
+// dense ball of ~N triangles on a floor 1,000 times its size; rays aimed at the ball).
 //
 //   build/release/bin/bench_complexity [--max N] [--rays R] [--csv FILE]
 //
@@ -87,20 +88,28 @@ int main(int argc, char** argv) {
     std::printf("%-8s %9s %-13s %10s %10s %9s %9s %9s\n", "input", "triangles", "structure", "build s", "ns/ray",
                 "nodes/ray", "prims/ray", "B/prim");
     int failures = 0;
-    for (const char* input : {"terrain", "soup"}) {
+    for (const char* input : {"terrain", "soup", "stadium"}) {
         for (long n = 100; n <= max_triangles; n *= 10) {
             // A terrain of c x c cells has 2c^2 triangles; a soup has exactly n.
             const int cells = std::max(1, int(std::lround(std::sqrt(double(n) / 2))));
             const auto build_start = std::chrono::steady_clock::now();
             SurfaceList list;
-            if (std::strcmp(input, "terrain") == 0)
+            Box target;  // where the rays aim
+            if (std::strcmp(input, "terrain") == 0) {
                 list.add(Mesh(terrain(Vec3(0), 10, 1.5, cells)));
-            else
+            } else if (std::strcmp(input, "soup") == 0) {
                 list.add(Mesh(triangle_soup(Vec3(0), 10, Real(10) / Real(std::cbrt(double(n))), int(n), 3)));
+            } else {
+                // An icosphere of 20 * 4^s triangles, the s nearest to n, on a 1000-wide floor.
+                const int s = std::max(1, int(std::lround(std::log(double(n) / 20) / std::log(4.0))));
+                list.add(Mesh(icosphere(Vec3(0, 1, 0), 1, s)));
+                target = list.bounding_box();
+                list.add(Polygon({Vec3(-500, 0, -500), Vec3(-500, 0, 500), Vec3(500, 0, 500), Vec3(500, 0, -500)}));
+            }
             // The mesh's own BVH (the fast path's lower level) is built with the mesh.
             const double mesh_build = seconds_since(build_start);
-            const std::size_t triangles = std::get<Mesh>(list[0].shape).data().triangles.size();
-            const std::vector<Ray> rays = make_rays(list.bounding_box(), int(ray_count));
+            const std::size_t triangles = primitives_of(list).size();
+            const std::vector<Ray> rays = make_rays(target.empty() ? list.bounding_box() : target, int(ray_count));
 
             std::vector<HitRecord> reference;
             for (AccelKind kind : kAccelKinds) {
@@ -147,7 +156,7 @@ int main(int argc, char** argv) {
     // predicts are 1 for brute force's query, 0 (log N) for a tree's, and about 1 (N log N)
     // for building.
     std::printf("\nslopes of log-log fits over the sizes measured (query, build):\n");
-    for (const char* input : {"terrain", "soup"})
+    for (const char* input : {"terrain", "soup", "stadium"})
         for (AccelKind kind : kAccelKinds) {
             double sx = 0, sy = 0, sb = 0, sxx = 0, sxy = 0, sxb = 0;
             int m = 0;

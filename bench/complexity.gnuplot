@@ -9,14 +9,14 @@ set key top left
 set format x '10^{%L}'
 set format y '10^{%L}'
 set xlabel 'triangles'
-structures = 'none bvh-sort bvh-midpoint bvh-sah fast'
+structures = 'none bvh-sort bvh-midpoint bvh-sah grid fast'
 rows(input, s) = sprintf("< awk -F, '$1 == \"%s\" && $3 == \"%s\"' %s", input, s, csv)
-do for [input in 'terrain soup'] {
+do for [input in 'terrain soup stadium'] {
     set output out.'/complexity-'.input.'.png'
     set multiplot layout 1,2 title input
     set ylabel 'ns per ray'
-    plot for [i=1:5] rows(input, word(structures, i)) using 2:5 with linespoints lc i pt i title word(structures, i)
+    plot for [i=1:6] rows(input, word(structures, i)) using 2:5 with linespoints lc i pt i title word(structures, i)
     set ylabel 'build seconds'
-    plot for [i=2:5] rows(input, word(structures, i)) using 2:4 with linespoints lc i pt i title word(structures, i)
+    plot for [i=2:6] rows(input, word(structures, i)) using 2:4 with linespoints lc i pt i title word(structures, i)
     unset multiplot
 }

@@ -8,6 +8,7 @@
 #include "io/scene_file.hpp"
 #include "render/render.hpp"
 #include "support.hpp"
+#include "support/accel_check.hpp"
 #include "support/source_dir.hpp"
 
 #include <pcg_random.hpp>
@@ -19,65 +20,15 @@
 #include <random>
 
 using namespace rt;
+using rt::test::disagreements;
+using rt::test::mixed_scene;
+using rt::test::Rng;
 
 namespace {
 
 const std::string kScenes = rt::test::source_dir() + "/chapters/ch10_bvh/scenes/";
 const Box kUnit{Vec3(0), Vec3(1)};
-
-struct Rng {
-    pcg32 gen{2024};
-    Real operator()(Real lo, Real hi) { return std::uniform_real_distribution<Real>(lo, hi)(gen); }
-    Vec3 vec(Real lo, Real hi) {
-        const Real x = (*this)(lo, hi), y = (*this)(lo, hi), z = (*this)(lo, hi);
-        return Vec3(x, y, z);
-    }
-};
-
-// A scene of every kind of primitive: spheres, a polygon, a lone triangle, a random soup,
-// a closed icosphere and two instances of it (one mirrored).
-SurfaceList mixed_scene() {
-    SurfaceList list;
-    Rng rng;
-    for (int k = 0; k < 60; ++k) list.add(Sphere(rng.vec(-6, 6), rng(0.1, 0.8)));
-    list.add(Polygon({Vec3(-8, -3, -8), Vec3(-8, -3, 8), Vec3(8, -3, 8), Vec3(8, -3, -8)}));
-    list.add(Triangle(Vec3(-2, 4, 0), Vec3(2, 4, 0.5), Vec3(0, 6, -1)));
-    list.add(Mesh(triangle_soup(Vec3(1, 1, 1), 6, 0.6, 1500, 7)));
-    const Mesh ball(icosphere(Vec3(0), 1, 3));
-    list.add(ball);
-    const auto base = std::make_shared<const Shape>(ball);
-    list.add(Instance(base, Affine::scale(Vec3(1.5, 0.7, 1)).then(Affine::translate(Vec3(3, 2, -4)))));
-    list.add(Instance(base, Affine::scale(Vec3(-1, 1, 1)).then(Affine::translate(Vec3(-4, 1, 3)))));
-    return list;
-}
-
 constexpr AccelKind kStructures[] = {AccelKind::bvh_sort, AccelKind::bvh_midpoint, AccelKind::bvh_sah, AccelKind::fast};
-
-// Every structure's closest hit and any-hit answer against brute force, for these rays.
-// Returns the number of disagreements (the first is CHECKed in full).
-int disagreements(const SurfaceList& list, const std::vector<Ray>& rays, const std::vector<Interval>& intervals) {
-    const Accel brute(list, AccelKind::none);
-    int failures = 0;
-    for (AccelKind kind : kStructures) {
-        const Accel accel(list, kind);
-        CAPTURE(accel_name(kind));
-        for (std::size_t k = 0; k < rays.size(); ++k) {
-            const Ray& ray = rays[k];
-            const Interval iv = intervals[k];
-            HitRecord want, got;
-            const bool want_hit = brute.hit(list, ray, iv, want), got_hit = accel.hit(list, ray, iv, got);
-            CAPTURE(k);
-            RT_CHECK_FIRST(failures, got_hit == want_hit);
-            if (got_hit && want_hit) {
-                RT_CHECK_FIRST(failures, got.t == want.t);
-                RT_CHECK_FIRST(failures, got.surface == want.surface);
-                RT_CHECK_FIRST(failures, got.primitive == want.primitive);
-            }
-            RT_CHECK_FIRST(failures, accel.occluded(list, ray, iv) == brute.occluded(list, ray, iv));
-        }
-    }
-    return failures;
-}
 
 }  // namespace
 
@@ -233,17 +184,8 @@ TEST_CASE("10.3 build_midpoint: split at the middle of the box, halve when all c
 
 TEST_CASE("10.4 every structure returns brute force's hit on 10^5 random rays (t, surface and triangle)") {
     const SurfaceList list = mixed_scene();
-    Rng rng;
-    std::vector<Ray> rays;
-    std::vector<Interval> intervals;
-    for (int k = 0; k < 25000; ++k) {
-        // From outside towards the middle, from inside in any direction, and short segments.
-        const Vec3 o = k % 2 ? rng.vec(-12, 12) : rng.vec(-4, 4);
-        const Vec3 target = rng.vec(-5, 5);
-        rays.push_back(Ray{o, k % 3 ? target - o : rng.vec(-1, 1)});
-        intervals.push_back(k % 7 == 0 ? Interval{rng(0, 0.5), rng(0.5, 1.5)} : Interval{});
-    }
-    CHECK(disagreements(list, rays, intervals) == 0);  // 4 structures x 25,000 rays
+    const rt::test::RaySet set = rt::test::random_rays(25000);
+    CHECK(disagreements(list, set.rays, set.intervals, kStructures) == 0);  // 4 structures x 25,000 rays
 }
 
 TEST_CASE("10.4 rays aimed exactly at a closed mesh's shared edges and vertices are never lost") {
@@ -253,29 +195,12 @@ TEST_CASE("10.4 rays aimed exactly at a closed mesh's shared edges and vertices 
     SurfaceList list;
     const MeshData data = icosphere(Vec3(0.3, -0.2, 0.1), 2, 3);
     list.add(Mesh(data));
-    Rng rng;
-    const Vec3 centre(0.3, -0.2, 0.1);
-    std::vector<Ray> rays, crossing;
-    std::vector<Interval> intervals;
-    for (const auto& t : data.triangles)
-        for (int e = 0; e < 3; ++e) {
-            const Vec3 a = data.positions[t[e]], b = data.positions[t[(e + 1) % 3]];
-            for (const Vec3& p : {a, (a + b) * Real(0.5)}) {
-                // From anywhere (grazing rays included: they test ties), and from outside
-                // roughly along the normal, so the ray crosses the surface there.
-                const Vec3 o = rng.vec(-9, 9) * Real(1.5);
-                rays.push_back(Ray{o, p - o});
-                intervals.push_back(Interval{});
-                const Vec3 q = centre + (p - centre) * rng(1.5, 4) + rng.vec(-0.5, 0.5);
-                crossing.push_back(Ray{q, p - q});
-                rays.push_back(crossing.back());
-                intervals.push_back(Interval{});
-            }
-        }
-    CHECK(disagreements(list, rays, intervals) == 0);
+    rt::test::RaySet all, crossing;
+    rt::test::edge_rays(data, Vec3(0.3, -0.2, 0.1), all, crossing);
+    CHECK(disagreements(list, all.rays, all.intervals, kStructures) == 0);
     const Accel fast(list, AccelKind::fast);
     int lost = 0;
-    for (const Ray& r : crossing) {
+    for (const Ray& r : crossing.rays) {
         HitRecord rec;
         if (!fast.hit(list, r, Interval{}, rec)) ++lost;
     }

@@ -14,6 +14,8 @@ const char* accel_name(AccelKind kind) {
             return "bvh-midpoint";
         case AccelKind::bvh_sah:
             return "bvh-sah";
+        case AccelKind::grid:
+            return "grid";
         case AccelKind::fast:
             return "fast";
     }
@@ -57,7 +59,7 @@ bool BruteForce::occluded(const SurfaceList& surfaces, const Ray& ray, Interval 
 
 namespace {
 
-std::variant<BruteForce, Bvh, FastBvh> make(const SurfaceList& surfaces, AccelKind kind) {
+std::variant<BruteForce, Bvh, Grid, FastBvh> make(const SurfaceList& surfaces, AccelKind kind) {
     switch (kind) {
         case AccelKind::bvh_sort:
             return Bvh(surfaces, BvhBuild::sorted);
@@ -65,6 +67,8 @@ std::variant<BruteForce, Bvh, FastBvh> make(const SurfaceList& surfaces, AccelKi
             return Bvh(surfaces, BvhBuild::midpoint);
         case AccelKind::bvh_sah:
             return Bvh(surfaces, BvhBuild::sah);
+        case AccelKind::grid:
+            return Grid(surfaces);
         case AccelKind::fast:
             return FastBvh(surfaces);
         case AccelKind::none:
@@ -90,6 +94,14 @@ Accel::Accel(const SurfaceList& surfaces, AccelKind kind)
         info_.nodes = b->node_count();
         info_.bytes = b->memory_bytes();
         info_.depth = b->depth();
+    } else if (const auto* g = std::get_if<Grid>(&impl_)) {
+        info_.primitives = g->primitive_count();
+        info_.nodes = g->cell_count();
+        info_.bytes = g->memory_bytes();
+    } else if (const auto* g = std::get_if<Grid>(&impl_)) {
+        info_.primitives = g->primitive_count();
+        info_.nodes = g->cell_count();
+        info_.bytes = g->memory_bytes();
     } else if (const auto* f = std::get_if<FastBvh>(&impl_)) {
         info_.primitives = primitives_of(surfaces).size();
         info_.nodes = f->node_count(surfaces);

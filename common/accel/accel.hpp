@@ -4,10 +4,12 @@
 //   bvh-sort      the course's BVH, sorted build (exercises 10.1, 10.2, 10.4)
 //   bvh-midpoint  the course's BVH, midpoint build (exercises 10.1, 10.3, 10.4)
 //   bvh-sah       the course's BVH over a surface-area-heuristic tree (exercises 10.1, 10.4)
+//   grid          the uniform grid (exercises 11.1, 11.2)
 //   fast          the two-level flat BVH (the default; library code only)
 // All return the same closest hit (t, surface and primitive) and the same any-hit answer.
 #include "accel/bvh.hpp"
 #include "accel/fast_bvh.hpp"
+#include "accel/grid.hpp"
 #include "accel/primitive.hpp"
 
 #include <optional>
@@ -16,9 +18,9 @@
 
 namespace rt {
 
-enum class AccelKind { none, bvh_sort, bvh_midpoint, bvh_sah, fast };
-inline constexpr AccelKind kAccelKinds[] = {AccelKind::none, AccelKind::bvh_sort, AccelKind::bvh_midpoint,
-                                            AccelKind::bvh_sah, AccelKind::fast};
+enum class AccelKind { none, bvh_sort, bvh_midpoint, bvh_sah, grid, fast };
+inline constexpr AccelKind kAccelKinds[] = {AccelKind::none,    AccelKind::bvh_sort, AccelKind::bvh_midpoint,
+                                            AccelKind::bvh_sah, AccelKind::grid,     AccelKind::fast};
 
 const char* accel_name(AccelKind kind);
 // The kind a name means, or nothing for an unknown name.
@@ -64,7 +66,7 @@ public:
 
 private:
     AccelInfo info_;  // before impl_: building impl_ records its time here
-    std::variant<BruteForce, Bvh, FastBvh> impl_;
+    std::variant<BruteForce, Bvh, Grid, FastBvh> impl_;
 };
 
 }  // namespace rt

@@ -1,0 +1,110 @@
+#pragma once
+// What the tests of chapters 10-12 share: a scene of every kind of primitive, and the check
+// of a structure against brute force.
+#include "accel/accel.hpp"
+#include "geometry/procedural.hpp"
+#include "support.hpp"
+
+#include <pcg_random.hpp>
+
+#include <memory>
+#include <random>
+#include <span>
+#include <vector>
+
+namespace rt::test {
+
+struct Rng {
+    pcg32 gen{2024};
+    Real operator()(Real lo, Real hi) { return std::uniform_real_distribution<Real>(lo, hi)(gen); }
+    Vec3 vec(Real lo, Real hi) {
+        const Real x = (*this)(lo, hi), y = (*this)(lo, hi), z = (*this)(lo, hi);
+        return Vec3(x, y, z);
+    }
+};
+
+// A scene of every kind of primitive: spheres, a polygon, a lone triangle, a random soup,
+// a closed icosphere and two instances of it (one mirrored).
+inline SurfaceList mixed_scene() {
+    SurfaceList list;
+    Rng rng;
+    for (int k = 0; k < 60; ++k) list.add(Sphere(rng.vec(-6, 6), rng(0.1, 0.8)));
+    list.add(Polygon({Vec3(-8, -3, -8), Vec3(-8, -3, 8), Vec3(8, -3, 8), Vec3(8, -3, -8)}));
+    list.add(Triangle(Vec3(-2, 4, 0), Vec3(2, 4, 0.5), Vec3(0, 6, -1)));
+    list.add(Mesh(triangle_soup(Vec3(1, 1, 1), 6, 0.6, 1500, 7)));
+    const Mesh ball(icosphere(Vec3(0), 1, 3));
+    list.add(ball);
+    const auto base = std::make_shared<const Shape>(ball);
+    list.add(Instance(base, Affine::scale(Vec3(1.5, 0.7, 1)).then(Affine::translate(Vec3(3, 2, -4)))));
+    list.add(Instance(base, Affine::scale(Vec3(-1, 1, 1)).then(Affine::translate(Vec3(-4, 1, 3)))));
+    return list;
+}
+
+// Rays for mixed_scene(): from outside towards the middle, from inside in any direction, and
+// one in seven a short segment.
+struct RaySet {
+    std::vector<Ray> rays;
+    std::vector<Interval> intervals;
+    void add(const Ray& r, Interval iv = {}) {
+        rays.push_back(r);
+        intervals.push_back(iv);
+    }
+};
+inline RaySet random_rays(int n) {
+    Rng rng;
+    RaySet set;
+    for (int k = 0; k < n; ++k) {
+        const Vec3 o = k % 2 ? rng.vec(-12, 12) : rng.vec(-4, 4);
+        const Vec3 target = rng.vec(-5, 5);
+        set.add(Ray{o, k % 3 ? target - o : rng.vec(-1, 1)},
+                k % 7 == 0 ? Interval{rng(0, 0.5), rng(0.5, 1.5)} : Interval{});
+    }
+    return set;
+}
+
+// Rays through every vertex and edge midpoint of a closed mesh around `centre`: in `all`,
+// from anywhere (grazing rays included: they make ties); in `crossing`, from outside roughly
+// along the normal, so that each crosses the surface there and must hit.
+inline void edge_rays(const MeshData& data, const Vec3& centre, RaySet& all, RaySet& crossing) {
+    Rng rng;
+    for (const auto& t : data.triangles)
+        for (int e = 0; e < 3; ++e) {
+            const Vec3 a = data.positions[t[e]], b = data.positions[t[(e + 1) % 3]];
+            for (const Vec3& p : {a, (a + b) * Real(0.5)}) {
+                const Vec3 o = rng.vec(-9, 9) * Real(1.5);
+                all.add(Ray{o, p - o});
+                const Vec3 q = centre + (p - centre) * rng(1.5, 4) + rng.vec(-0.5, 0.5);
+                crossing.add(Ray{q, p - q});
+                all.add(crossing.rays.back());
+            }
+        }
+}
+
+// Each structure's closest hit and any-hit answer against brute force, for these rays.
+// Returns the number of disagreements (the first is CHECKed in full).
+inline int disagreements(const SurfaceList& list, const std::vector<Ray>& rays, const std::vector<Interval>& intervals,
+                         std::span<const AccelKind> structures) {
+    const Accel brute(list, AccelKind::none);
+    int failures = 0;
+    for (AccelKind kind : structures) {
+        const Accel accel(list, kind);
+        CAPTURE(accel_name(kind));
+        for (std::size_t k = 0; k < rays.size(); ++k) {
+            const Ray& ray = rays[k];
+            const Interval iv = intervals[k];
+            HitRecord want, got;
+            const bool want_hit = brute.hit(list, ray, iv, want), got_hit = accel.hit(list, ray, iv, got);
+            CAPTURE(k);
+            RT_CHECK_FIRST(failures, got_hit == want_hit);
+            if (got_hit && want_hit) {
+                RT_CHECK_FIRST(failures, got.t == want.t);
+                RT_CHECK_FIRST(failures, got.surface == want.surface);
+                RT_CHECK_FIRST(failures, got.primitive == want.primitive);
+            }
+            RT_CHECK_FIRST(failures, accel.occluded(list, ray, iv) == brute.occluded(list, ray, iv));
+        }
+    }
+    return failures;
+}
+
+}  // namespace rt::test

@@ -1,0 +1,149 @@
+// Chapter 11: the uniform grid (course §9.9.3). Where a walk starts, the cells it visits
+// (as many as the planes the ray crosses, plus one), the course's Figure 9.23 trap, and the
+// grid against brute force on random rays and on rays through a closed mesh's shared edges.
+#include "accel/accel.hpp"
+#include "io/scene_file.hpp"
+#include "render/integrators.hpp"
+#include "render/render.hpp"
+#include "support.hpp"
+#include "support/accel_check.hpp"
+#include "support/source_dir.hpp"
+
+#include <cmath>
+
+using namespace rt;
+
+namespace {
+
+const std::string kScenes = rt::test::source_dir() + "/chapters/ch11_grid/scenes/";
+constexpr AccelKind kGrid[] = {AccelKind::grid};
+
+// Spheres at the corners of the box [-4, 4]^3, small enough that rays through the middle
+// miss them all: a grid to walk through without stopping.
+SurfaceList corners() {
+    SurfaceList list;
+    for (int k = 0; k < 8; ++k)
+        list.add(Sphere(Vec3(k & 1 ? 3.9 : -3.9, k & 2 ? 3.9 : -3.9, k & 4 ? 3.9 : -3.9), Real(0.1)));
+    return list;
+}
+
+}  // namespace
+
+TEST_SUITE("ch11") {
+TEST_CASE("11.1 start: the first cell, the steps, and the first plane along each axis") {
+    const SurfaceList list = corners();
+    const Grid grid(list, 64);  // 512 cells: 8 a side
+    REQUIRE(grid.resolution() == std::array<int, 3>{8, 8, 8});
+    CHECK(grid.cell_size().x == doctest::Approx(1));
+    // From outside, along +x at y = 0.5, z = -2.5: enters cell (0, 4, 1) at x = -4.
+    GridWalk w;
+    REQUIRE(grid.start(Ray{Vec3(-10, 0.5, -2.5), Vec3(2, 0, 0)}, Interval{}, w));
+    CHECK(w.cell == std::array<int, 3>{0, 4, 1});
+    CHECK(w.step == std::array<int, 3>{1, 0, 0});
+    CHECK(w.t_max.x == doctest::Approx(3.5));  // the plane x = -3, reached at t = 7 / 2
+    CHECK(w.t_max.y == kInfinity);
+    CHECK(w.t_max.z == kInfinity);
+    // From inside, towards -x, -y, +z, with a -0: the cell holding the origin.
+    REQUIRE(grid.start(Ray{Vec3(1.25, -0.75, 2.5), Vec3(-1, -0.5, -Real(0))}, Interval{}, w));
+    CHECK(w.cell == std::array<int, 3>{5, 3, 6});
+    CHECK(w.step == std::array<int, 3>{-1, -1, 0});
+    CHECK(w.t_max.x == doctest::Approx(0.25));  // back to x = 1
+    CHECK(w.t_max.y == doctest::Approx(0.5));   // down to y = -1: 0.25 / 0.5
+    CHECK(w.t_max.z == kInfinity);
+    // The interval counts: a walk that would start past its end does not start.
+    CHECK_FALSE(grid.start(Ray{Vec3(-10, 0.5, -2.5), Vec3(1, 0, 0)}, Interval{0, 5}, w));
+    CHECK_FALSE(grid.start(Ray{Vec3(-10, 9, 0), Vec3(1, 0, 0)}, Interval{}, w));  // above the grid
+}
+
+TEST_CASE("11.2 a ray visits one cell more than the planes it crosses (Amanatides & Woo)") {
+    // An analytic count, not the renderer's: a ray through the whole grid from face to face
+    // crosses floor(exit) - floor(entry) planes along each axis (unit cells from -4).
+    const SurfaceList list = corners();
+    const Grid grid(list, 64);
+    rt::test::Rng rng;
+    int failures = 0;
+    for (int k = 0; k < 1000; ++k) {
+        const Vec3 a(-4, rng(-3.5, 3.5), rng(-3.5, 3.5)), b(4, rng(-3.5, 3.5), rng(-3.5, 3.5));
+        const Ray ray{a - (b - a), b - a};  // from outside: enters at t = 1, leaves at t = 2
+        int planes = 0;
+        for (int axis = 0; axis < 3; ++axis)
+            planes += int(std::abs(std::floor(std::min(b[axis], Real(3.999)) + 4) - std::floor(a[axis] + 4)));
+        traversal_tally = {};
+        HitRecord best = no_hit_before(kInfinity);
+        const bool hit = grid.walk(list, ray, Interval{}, best);
+        CAPTURE(k);
+        RT_CHECK_FIRST(failures, !hit);
+        RT_CHECK_FIRST(failures, traversal_tally.nodes == std::uint64_t(planes + 1));
+    }
+    CHECK(failures == 0);
+}
+
+TEST_CASE("11.2 the course's Figure 9.23: a hit beyond the current cell must wait") {
+    // A tilted triangle reaches over the whole grid, so it is listed in the first cell, but
+    // the ray along the x axis meets it only at x = 2.5; a small sphere at x = 1.9 is met
+    // first, in a cell after the first. A walk that takes any hit where it finds one
+    // returns the triangle; the right walk returns the sphere, as brute force does.
+    SurfaceList list;
+    const SurfaceId tilted = list.add(Triangle(Vec3(4, -2, -1.5), Vec3(4, 2, -1.5), Vec3(0, 0, 2.5)));
+    const SurfaceId ball = list.add(Sphere(Vec3(1.9, 0, 0), Real(0.15)));
+    const Grid grid(list, 200);
+    REQUIRE(grid.resolution()[0] >= 5);
+    const Ray ray{Vec3(-1, 0, 0), Vec3(1, 0, 0)};
+
+    HitRecord wrong = no_hit_before(kInfinity);
+    REQUIRE(grid.walk_unchecked(list, ray, Interval{}, wrong));
+    CHECK(wrong.surface == tilted);  // the trap is there
+    CHECK(wrong.t == doctest::Approx(3.5));
+
+    HitRecord rec, want;
+    REQUIRE(grid.hit(list, ray, Interval{}, rec));
+    REQUIRE(Accel(list, AccelKind::none).hit(list, ray, Interval{}, want));
+    CHECK(want.surface == ball);
+    CHECK(rec.surface == ball);
+    CHECK(rec.t == want.t);
+    CHECK(rec.t == doctest::Approx(2.75));
+}
+
+TEST_CASE("11.2 the grid returns brute force's hit on 10^5 random rays (t, surface and triangle)") {
+    const SurfaceList list = rt::test::mixed_scene();
+    const rt::test::RaySet set = rt::test::random_rays(100000);
+    CHECK(rt::test::disagreements(list, set.rays, set.intervals, kGrid) == 0);
+}
+
+TEST_CASE("11.2 rays aimed at a closed mesh's shared edges and vertices: none lost, brute force's hit") {
+    SurfaceList list;
+    const MeshData data = icosphere(Vec3(0.3, -0.2, 0.1), 2, 3);
+    list.add(Mesh(data));
+    list.add(Sphere(Vec3(5, 5, 5), 1));  // a second primitive, so the grid is not one mesh's box
+    rt::test::RaySet all, crossing;
+    rt::test::edge_rays(data, Vec3(0.3, -0.2, 0.1), all, crossing);
+    CHECK(rt::test::disagreements(list, all.rays, all.intervals, kGrid) == 0);
+    const Accel grid(list, AccelKind::grid);
+    int lost = 0;
+    for (const Ray& r : crossing.rays) {
+        HitRecord rec;
+        lost += !grid.hit(list, r, Interval{}, rec);
+    }
+    CHECK(lost == 0);
+}
+
+TEST_CASE("11.2 the chapter's scenes render the same image with the grid as with brute force") {
+    RenderOptions o;
+    o.width = 40;
+    o.height = 30;
+    o.threads = 2;
+    for (const char* name : {"atoms", "stadium"}) {
+        Scene scene = load_scene_file(kScenes + name + ".json");
+        if (std::string(name) == "stadium") scene.integrator = make_integrator("normal");  // cost differs by design
+        scene.build_accel(AccelKind::none);
+        const Image want = render(scene, o).image;
+        scene.build_accel(AccelKind::grid);
+        const Image got = render(scene, o).image;
+        CAPTURE(name);
+        int differ = 0;
+        for (int y = 0; y < o.height; ++y)
+            for (int x = 0; x < o.width; ++x) differ += got.at(x, y) != want.at(x, y);
+        CHECK(differ == 0);
+    }
+}
+}
