@@ -16,6 +16,7 @@
 
 #include <pcg_random.hpp>
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -100,8 +101,9 @@ int main(int argc, char** argv) {
             } else if (std::strcmp(input, "soup") == 0) {
                 list.add(Mesh(triangle_soup(Vec3(0), 10, Real(10) / Real(std::cbrt(double(n))), int(n), 3)));
             } else {
-                // An icosphere of 20 * 4^s triangles, the s nearest to n, on a 1000-wide floor.
-                const int s = std::max(1, int(std::lround(std::log(double(n) / 20) / std::log(4.0))));
+                // An icosphere of 20 * 4^s triangles, the s nearest to n (at most 7: 327,680), on
+                // a 1000-wide floor.
+                const int s = std::clamp(int(std::lround(std::log(double(n) / 20) / std::log(4.0))), 1, 7);
                 list.add(Mesh(icosphere(Vec3(0, 1, 0), 1, s)));
                 target = list.bounding_box();
                 list.add(Polygon({Vec3(-500, 0, -500), Vec3(-500, 0, 500), Vec3(500, 0, 500), Vec3(500, 0, -500)}));
