@@ -106,7 +106,7 @@ TEST_CASE("11.2 the course's Figure 9.23: a hit beyond the current cell must wai
 
 TEST_CASE("11.2 the grid returns brute force's hit on 10^5 random rays (t, surface and triangle)") {
     const SurfaceList list = rt::test::mixed_scene();
-    const rt::test::RaySet set = rt::test::random_rays(100000);
+    const rt::test::RaySet set = rt::test::random_rays(rt::test::kRandomRays);
     CHECK(rt::test::disagreements(list, set.rays, set.intervals, kGrid) == 0);
 }
 
