@@ -98,10 +98,6 @@ Accel::Accel(const SurfaceList& surfaces, AccelKind kind)
         info_.primitives = g->primitive_count();
         info_.nodes = g->cell_count();
         info_.bytes = g->memory_bytes();
-    } else if (const auto* g = std::get_if<Grid>(&impl_)) {
-        info_.primitives = g->primitive_count();
-        info_.nodes = g->cell_count();
-        info_.bytes = g->memory_bytes();
     } else if (const auto* f = std::get_if<FastBvh>(&impl_)) {
         info_.primitives = primitives_of(surfaces).size();
         info_.nodes = f->node_count(surfaces);
