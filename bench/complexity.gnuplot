@@ -9,7 +9,7 @@ set key top left
 set format x '10^{%L}'
 set format y '10^{%L}'
 set xlabel 'triangles'
-structures = 'none bvh-sort bvh-midpoint bvh-sah grid fast'
+structures = 'none bvh-sort bvh-midpoint bvh-sah grid bsp-midpoint bsp fast'
 rows(input, s) = sprintf("< awk -F, '$1 == \"%s\" && $3 == \"%s\"' %s", input, s, csv)
 do for [input in 'terrain soup stadium'] {
     set output out.'/complexity-'.input.'.png'

@@ -290,7 +290,7 @@ renders("mirror_sphere_depth_64", {**W, M + "/mirror": [1, 1, 1], L + "/position
 renders("transform_nearly_flat", {**W, S + "/transform": [{"scale": [1, 1e-5, 1]}, {"rotate": [1, 1, 0], "degrees": 30}]})
 renders("transform_mirror", {**W, S + "/transform": [{"scale": [-1, 1, 1]}]})
 renders("offset_course_tiny", {**W, "/offset": {"method": "course", "epsilon": 1e-6}})
-for kind in ["none", "bvh-sort", "bvh-midpoint", "bvh-sah", "grid", "fast"]:
+for kind in ["none", "bvh-sort", "bvh-midpoint", "bvh-sah", "grid", "bsp-midpoint", "bsp", "fast"]:
     renders("accel_" + kind.replace("-", "_"), {**W, "/accel": kind})
 
 good = patched({})

@@ -16,6 +16,10 @@ const char* accel_name(AccelKind kind) {
             return "bvh-sah";
         case AccelKind::grid:
             return "grid";
+        case AccelKind::bsp_midpoint:
+            return "bsp-midpoint";
+        case AccelKind::bsp:
+            return "bsp";
         case AccelKind::fast:
             return "fast";
     }
@@ -59,7 +63,7 @@ bool BruteForce::occluded(const SurfaceList& surfaces, const Ray& ray, Interval 
 
 namespace {
 
-std::variant<BruteForce, Bvh, Grid, FastBvh> make(const SurfaceList& surfaces, AccelKind kind) {
+std::variant<BruteForce, Bvh, Grid, Bsp, FastBvh> make(const SurfaceList& surfaces, AccelKind kind) {
     switch (kind) {
         case AccelKind::bvh_sort:
             return Bvh(surfaces, BvhBuild::sorted);
@@ -69,6 +73,10 @@ std::variant<BruteForce, Bvh, Grid, FastBvh> make(const SurfaceList& surfaces, A
             return Bvh(surfaces, BvhBuild::sah);
         case AccelKind::grid:
             return Grid(surfaces);
+        case AccelKind::bsp_midpoint:
+            return Bsp(surfaces, BspBuild::midpoint);
+        case AccelKind::bsp:
+            return Bsp(surfaces, BspBuild::sah);
         case AccelKind::fast:
             return FastBvh(surfaces);
         case AccelKind::none:
@@ -98,6 +106,11 @@ Accel::Accel(const SurfaceList& surfaces, AccelKind kind)
         info_.primitives = g->primitive_count();
         info_.nodes = g->cell_count();
         info_.bytes = g->memory_bytes();
+    } else if (const auto* t = std::get_if<Bsp>(&impl_)) {
+        info_.primitives = t->primitive_count();
+        info_.nodes = t->node_count();
+        info_.bytes = t->memory_bytes();
+        info_.depth = t->depth();
     } else if (const auto* f = std::get_if<FastBvh>(&impl_)) {
         info_.primitives = primitives_of(surfaces).size();
         info_.nodes = f->node_count(surfaces);

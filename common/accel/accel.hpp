@@ -5,8 +5,11 @@
 //   bvh-midpoint  the course's BVH, midpoint build (exercises 10.1, 10.3, 10.4)
 //   bvh-sah       the course's BVH over a surface-area-heuristic tree (exercises 10.1, 10.4)
 //   grid          the uniform grid (exercises 11.1, 11.2)
+//   bsp-midpoint  the course's BSP tree, cyclic midpoint build (exercises 12.1, 12.2)
+//   bsp           the course's BSP tree, surface-area-heuristic build (exercise 12.1)
 //   fast          the two-level flat BVH (the default; library code only)
 // All return the same closest hit (t, surface and primitive) and the same any-hit answer.
+#include "accel/bsp.hpp"
 #include "accel/bvh.hpp"
 #include "accel/fast_bvh.hpp"
 #include "accel/grid.hpp"
@@ -18,9 +21,10 @@
 
 namespace rt {
 
-enum class AccelKind { none, bvh_sort, bvh_midpoint, bvh_sah, grid, fast };
+enum class AccelKind { none, bvh_sort, bvh_midpoint, bvh_sah, grid, bsp_midpoint, bsp, fast };
 inline constexpr AccelKind kAccelKinds[] = {AccelKind::none,    AccelKind::bvh_sort, AccelKind::bvh_midpoint,
-                                            AccelKind::bvh_sah, AccelKind::grid,     AccelKind::fast};
+                                            AccelKind::bvh_sah, AccelKind::grid,     AccelKind::bsp_midpoint,
+                                            AccelKind::bsp,     AccelKind::fast};
 
 const char* accel_name(AccelKind kind);
 // The kind a name means, or nothing for an unknown name.
@@ -66,7 +70,7 @@ public:
 
 private:
     AccelInfo info_;  // before impl_: building impl_ records its time here
-    std::variant<BruteForce, Bvh, Grid, FastBvh> impl_;
+    std::variant<BruteForce, Bvh, Grid, Bsp, FastBvh> impl_;
 };
 
 }  // namespace rt

@@ -75,18 +75,7 @@ Grid::Grid(const SurfaceList& surfaces, Real density) : primitives_(primitives_o
 }
 
 bool Grid::clip(const Ray& ray, Interval& interval) const {
-    if (bounds_.empty()) return false;
-    Real t0 = interval.min, t1 = interval.max;
-    for (int a = 0; a < 3; ++a) {
-        const Real inv = Real(1) / ray.direction[a];
-        Real near = (bounds_.min[a] - ray.origin[a]) * inv, far = (bounds_.max[a] - ray.origin[a]) * inv;
-        if (inv < 0) std::swap(near, far);
-        if (near > t0) t0 = near;  // a NaN (the ray in a slab's plane) changes nothing
-        if (far < t1) t1 = far;
-    }
-    if (!(t0 <= widen_far(t1))) return false;
-    interval = Interval{t0, std::max(t0, widen_far(t1))};
-    return true;
+    return !bounds_.empty() && clip_to_box(bounds_, ray, interval);
 }
 
 Real Grid::cell_exit(const Ray& ray, const GridWalk& walk) const {

@@ -22,12 +22,12 @@ struct Box {
     }
 };
 
-// Might the ray meet the box for some t in the interval? A cull only, so it errs towards
-// yes: a far distance padded by a few units in the last place (after Ize 2013), and a NaN
-// from a ray lying in a slab's plane (0 * infinity) leaves that slab's bounds alone.
-// Chapter 10 derives it; meshes and instances use it so that a ray that passes far from
-// them costs one test.
-inline bool might_hit(const Box& box, const Ray& ray, Interval interval) {
+// Shrinks the interval to the part where the ray is inside the box; false if that part is
+// empty. Errs towards keeping: the far end is padded by a few units in the last place
+// (after Ize 2013), and a NaN from a ray lying in a slab's plane (0 * infinity) leaves that
+// slab's bounds alone. Chapter 10 derives it (exercise 10.1 is the same test); the grid and
+// the BSP clip rays to their box with it.
+inline bool clip_to_box(const Box& box, const Ray& ray, Interval& interval) {
     Real lo = interval.min, hi = interval.max;
     for (int a = 0; a < 3; ++a) {
         const Real inv = Real(1) / ray.direction[a];
@@ -38,8 +38,16 @@ inline bool might_hit(const Box& box, const Ray& ray, Interval interval) {
         if (t0 > lo) lo = t0;
         if (t1 < hi) hi = t1;
     }
-    constexpr Real pad = 4 * std::numeric_limits<Real>::epsilon();
-    return lo <= hi + std::abs(hi) * pad;
+    hi = widen_far(hi);
+    if (!(lo <= hi)) return false;
+    interval = Interval{lo, hi};
+    return true;
+}
+
+// Might the ray meet the box for some t in the interval? A cull in front of meshes and
+// instances, so that a ray that passes far from them costs one test.
+inline bool might_hit(const Box& box, const Ray& ray, Interval interval) {
+    return clip_to_box(box, ray, interval);
 }
 
 }  // namespace rt

@@ -3,6 +3,7 @@
 // of a structure against brute force.
 #include "accel/accel.hpp"
 #include "geometry/procedural.hpp"
+#include "render/render.hpp"
 #include "support.hpp"
 
 #include <pcg_random.hpp>
@@ -124,6 +125,29 @@ inline int disagreements(const SurfaceList& list, const std::vector<Ray>& rays, 
         }
     }
     return failures;
+}
+
+// Renders the scene small with brute force and then with each structure; returns how many
+// pixels differ in all (the structures promise none: the same hits, bit for bit).
+inline int image_differences(Scene scene, std::span<const AccelKind> structures, int width = 32, int height = 24) {
+    RenderOptions o;
+    o.width = width;
+    o.height = height;
+    o.threads = 2;
+    scene.build_accel(AccelKind::none);
+    const Image want = render(scene, o).image;
+    int differ = 0;
+    for (AccelKind kind : structures) {
+        scene.build_accel(kind);
+        const Image got = render(scene, o).image;
+        int here = 0;
+        for (int y = 0; y < o.height; ++y)
+            for (int x = 0; x < o.width; ++x) here += got.at(x, y) != want.at(x, y);
+        CAPTURE(accel_name(kind));
+        CHECK(here == 0);
+        differ += here;
+    }
+    return differ;
 }
 
 }  // namespace rt::test

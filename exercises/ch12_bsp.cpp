@@ -1,0 +1,30 @@
+// STUDENT COPY of solutions/ch12_bsp.cpp, made by tools/gen_exercises.cpp.
+// Write your code between each "@exercise" line and its "@end", in place of the throw.
+// Only those lines are yours: ./lab exercises keeps them and rewrites the rest.
+// Chapter 12 exercises: the binary space partitioning tree (book §12, course §9.9.4).
+// Declared in common/accel/bsp.hpp.
+#include "accel/bsp.hpp"
+#include "core/exercise.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rt {
+
+// @book four-cases
+bool Bsp::hit_node(const SurfaceList& surfaces, BspRef ref, const Ray& ray, Interval interval, HitRecord& best) const {
+    // @exercise 12.1 | Bsp::hit_node | book §12.2
+    throw NotImplemented("exercise 12.1 (Bsp::hit_node) is not done yet: see book §12.2");
+    // @end
+}
+// @book-end
+
+// @book midpoint
+BspRef build_midpoint(BspBuilder& builder, std::span<const std::uint32_t> items, const Box& cell, int depth) {
+    // @exercise 12.2 | build_midpoint | book §12.4
+    throw NotImplemented("exercise 12.2 (build_midpoint) is not done yet: see book §12.4");
+    // @end
+}
+// @book-end
+
+}  // namespace rt
