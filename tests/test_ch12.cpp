@@ -238,14 +238,22 @@ TEST_CASE("12.3 the surface-area heuristic cuts off empty space") {
     // costs the same, and less than any other, so the root's plane falls in the gap.
     SurfaceList list;
     rt::test::Rng rng;
-    for (int k = 0; k < 40; ++k) list.add(Sphere(Vec3(rng(-9.8, -8.2), rng(-1, 1), rng(-1, 1)), Real(0.2)));
-    for (int k = 0; k < 40; ++k) list.add(Sphere(Vec3(rng(4.2, 5.8), rng(-1, 1), rng(-1, 1)), Real(0.2)));
+    Real left_end = -kInfinity, right_start = kInfinity;  // the gap between the clusters
+    for (int k = 0; k < 40; ++k) {
+        list.add(Sphere(Vec3(rng(-9.8, -8.2), rng(-1, 1), rng(-1, 1)), Real(0.2)));
+        left_end = std::max(left_end, list.bounding_box().max.x);
+    }
+    for (int k = 0; k < 40; ++k) {
+        const Real x = rng(4.2, 5.8);
+        list.add(Sphere(Vec3(x, rng(-1, 1), rng(-1, 1)), Real(0.2)));
+        right_start = std::min(right_start, x - Real(0.2));
+    }
     const Bsp sah(list, BspBuild::sah);
     const BspNode& root = sah.node(sah.root());
     REQUIRE_FALSE(root.leaf());
     CHECK(root.axis == 0);
-    CHECK(root.split > -8);
-    CHECK(root.split < 4);
+    CHECK(root.split > left_end);
+    CHECK(root.split < right_start);
     // And per ray it tests fewer primitives than the midpoint tree on the chapter's city.
     Scene city = load_scene_file(kScenes + "city.json");
     RenderOptions o;

@@ -47,59 +47,103 @@ BspRef BspBuilder::add_inner(int axis, Real split, BspRef left, BspRef right) {
     return BspRef(nodes_.size() - 1);
 }
 
+namespace {
+
+// The surface-area heuristic's price of a cell's split, in units of one node visit: the
+// visit, plus the primitives tested on each side times the chance that a ray through the
+// cell meets that side (the ratio of surface areas). A side left empty earns a bonus: a ray
+// through it costs nothing. A primitive test costs about as much as kIntersect visits.
+constexpr Real kTraverse = 1, kIntersect = 16, kEmptyBonus = Real(0.5);
+// Lists longer than this try 32 evenly spaced planes per axis (binning); shorter ones try a
+// plane just outside every box's faces, which is exact and finds the empty space around an
+// object however small it is in its cell.
+constexpr std::size_t kExactBelow = 512;
+constexpr int kBins = 32;
+
+Real half_area(const Vec3& e) {
+    return e.x * e.y + e.y * e.z + e.z * e.x;
+}
+
+struct Split {
+    Real cost;
+    int axis = -1;
+    Real at = 0;
+};
+
+void consider(Split& best, const Box& cell, int axis, Real at, std::size_t below, std::size_t above) {
+    if (!(at > cell.min[axis] && at < cell.max[axis])) return;
+    const Vec3 extent = cell.max - cell.min;
+    Vec3 e_below = extent, e_above = extent;
+    e_below[axis] = at - cell.min[axis];
+    e_above[axis] = cell.max[axis] - at;
+    const Real bonus = (below == 0 || above == 0) ? kEmptyBonus : 0;
+    const Real cost = kTraverse + kIntersect * (1 - bonus) *
+                                      (half_area(e_below) * Real(below) + half_area(e_above) * Real(above)) /
+                                      half_area(extent);
+    if (cost < best.cost) best = Split{cost, axis, at};
+}
+
+// Every box's faces along the axis, the plane put 3 pads outside each so that the box falls
+// wholly on one side of it (BspBuilder::sort lists a box within 2 pads on both sides).
+void exact_planes(const BspBuilder& b, std::span<const std::uint32_t> items, const Box& cell, int axis, Split& best) {
+    std::vector<Real> lo, hi;
+    lo.reserve(items.size());
+    hi.reserve(items.size());
+    for (std::uint32_t p : items) {
+        lo.push_back(b.box(p).min[axis]);
+        hi.push_back(b.box(p).max[axis]);
+    }
+    std::sort(lo.begin(), lo.end());
+    std::sort(hi.begin(), hi.end());
+    const Real pad = b.pad();
+    const auto count = [&](Real at) {
+        const auto below = std::size_t(std::upper_bound(lo.begin(), lo.end(), at + 2 * pad) - lo.begin());
+        const auto above = std::size_t(hi.end() - std::lower_bound(hi.begin(), hi.end(), at - 2 * pad));
+        consider(best, cell, axis, at, below, above);
+    };
+    for (Real x : lo) count(x - 3 * pad);
+    for (Real x : hi) count(x + 3 * pad);
+}
+
+// 32 evenly spaced planes: how many boxes start and end in each bin; a plane between bins has
+// below it every box that starts before it, above it every box that ends after it.
+void binned_planes(const BspBuilder& b, std::span<const std::uint32_t> items, const Box& cell, int axis, Split& best) {
+    std::array<std::size_t, kBins> starts{}, ends{};
+    const Real scale = Real(kBins) / (cell.max[axis] - cell.min[axis]);
+    const auto bin = [&](Real x) { return std::size_t(std::clamp(int((x - cell.min[axis]) * scale), 0, kBins - 1)); };
+    for (std::uint32_t p : items) {
+        ++starts[bin(b.box(p).min[axis])];
+        ++ends[bin(b.box(p).max[axis])];
+    }
+    std::size_t below = 0, above = items.size();
+    for (int k = 1; k < kBins; ++k) {
+        below += starts[std::size_t(k - 1)];
+        above -= ends[std::size_t(k - 1)];
+        consider(best, cell, axis, cell.min[axis] + (cell.max[axis] - cell.min[axis]) * Real(k) / Real(kBins), below,
+                 above);
+    }
+}
+
+}  // namespace
+
 BspRef build_sah(BspBuilder& b, std::span<const std::uint32_t> items, const Box& cell, int depth) {
     const std::size_t n = items.size();
     if (n <= b.leaf_size() || depth >= b.max_depth()) return b.add_leaf(items);
-
-    // Costs in units of one node visit; a primitive test costs about as much as 16 (measured
-    // with bench_complexity: between 8 and 32 the times differ by a few per cent). A side
-    // left empty earns a bonus: a ray through it costs nothing.
-    constexpr Real kTraverse = 1, kIntersect = 16, kEmptyBonus = Real(0.5);
-    constexpr int kBins = 32;
-    const auto area = [](const Vec3& e) { return e.x * e.y + e.y * e.z + e.z * e.x; };
-    const Vec3 extent = cell.max - cell.min;
-    const Real total_area = area(extent);
-
-    Real best_cost = kIntersect * Real(n);  // a leaf's
-    int best_axis = -1;
-    Real best_split = 0;
+    Split best{kIntersect * Real(n)};  // a leaf's cost: a split must beat it
     for (int axis = 0; axis < 3; ++axis) {
-        if (!(extent[axis] > 0)) continue;
-        // How many boxes start and end in each bin; a plane between bins has below it every
-        // box that starts before it, above it every box that ends after it.
-        std::array<std::uint32_t, kBins> starts{}, ends{};
-        const Real scale = Real(kBins) / extent[axis];
-        const auto bin = [&](Real x) { return std::clamp(int((x - cell.min[axis]) * scale), 0, kBins - 1); };
-        for (std::uint32_t p : items) {
-            ++starts[std::size_t(bin(b.box(p).min[axis]))];
-            ++ends[std::size_t(bin(b.box(p).max[axis]))];
-        }
-        std::uint32_t below = 0, above = std::uint32_t(n);
-        for (int k = 1; k < kBins; ++k) {
-            below += starts[std::size_t(k - 1)];
-            above -= ends[std::size_t(k - 1)];
-            const Real split = cell.min[axis] + extent[axis] * Real(k) / Real(kBins);
-            Vec3 e_below = extent, e_above = extent;
-            e_below[axis] = split - cell.min[axis];
-            e_above[axis] = cell.max[axis] - split;
-            const Real bonus = (below == 0 || above == 0) ? kEmptyBonus : 0;
-            const Real cost = kTraverse + kIntersect * (1 - bonus) *
-                                              (area(e_below) * Real(below) + area(e_above) * Real(above)) / total_area;
-            if (cost < best_cost) {
-                best_cost = cost;
-                best_axis = axis;
-                best_split = split;
-            }
-        }
+        if (!(cell.max[axis] > cell.min[axis])) continue;
+        if (n < kExactBelow)
+            exact_planes(b, items, cell, axis, best);
+        else
+            binned_planes(b, items, cell, axis, best);
     }
-    if (best_axis < 0) return b.add_leaf(items);
-
+    if (best.axis < 0) return b.add_leaf(items);
     std::vector<std::uint32_t> below, above;
-    b.sort(items, best_axis, best_split, below, above);
+    b.sort(items, best.axis, best.at, below, above);
     if (below.size() == n && above.size() == n) return b.add_leaf(items);  // the pad put all on both
-    const BspRef left = build_sah(b, below, below_plane(cell, best_axis, best_split), depth + 1);
-    const BspRef right = build_sah(b, above, above_plane(cell, best_axis, best_split), depth + 1);
-    return b.add_inner(best_axis, best_split, left, right);
+    const BspRef left = build_sah(b, below, below_plane(cell, best.axis, best.at), depth + 1);
+    const BspRef right = build_sah(b, above, above_plane(cell, best.axis, best.at), depth + 1);
+    return b.add_inner(best.axis, best.at, left, right);
 }
 
 Bsp::Bsp(const SurfaceList& surfaces, BspBuild how, std::size_t leaf_size) : primitives_(primitives_of(surfaces)) {

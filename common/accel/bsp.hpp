@@ -74,9 +74,10 @@ inline Box above_plane(Box cell, int axis, Real split) {
 // divides (every item would go to both sides).
 BspRef build_midpoint(BspBuilder& builder, std::span<const std::uint32_t> items, const Box& cell, int depth);
 
-// The surface-area-heuristic build: along each axis, 32 candidate planes; the one of least
-// expected cost (a node visit plus the primitives tested on each side, weighted by the
-// chance a ray through the cell meets that side) if it beats a leaf. Library code.
+// The surface-area-heuristic build: the plane of least expected cost (a node visit plus the
+// primitives tested on each side, weighted by the chance a ray through the cell meets that
+// side), if it beats a leaf; the planes tried are just outside every box's faces, or, for
+// long lists, 32 a axis. Library code (bsp.cpp).
 BspRef build_sah(BspBuilder& builder, std::span<const std::uint32_t> items, const Box& cell, int depth);
 
 enum class BspBuild { midpoint, sah };
