@@ -40,12 +40,13 @@ BspRef build_midpoint(BspBuilder& builder, std::span<const std::uint32_t> items,
     // @exercise 12.2 | build_midpoint | book §12.4
     if (items.size() <= builder.leaf_size() || depth >= builder.max_depth()) return builder.add_leaf(items);
     std::vector<std::uint32_t> below, above;
-    // The axis of this depth first; if its middle divides nothing, the next ones.
+    // The axis of this depth first; if its middle sends more than half the items to both
+    // sides, the cut costs more in copies than it saves, so the next axis; then a leaf.
     for (int k = 0; k < 3; ++k) {
         const int axis = (depth + k) % 3;
         const Real split = (cell.min[axis] + cell.max[axis]) / 2;
         builder.sort(items, axis, split, below, above);
-        if (below.size() == items.size() && above.size() == items.size()) continue;
+        if (2 * (below.size() + above.size()) > 3 * items.size()) continue;
         // Children first (their nodes come before this one), in order: one after the other,
         // so the tree is the same whatever the compiler.
         const BspRef left = build_midpoint(builder, below, below_plane(cell, axis, split), depth + 1);

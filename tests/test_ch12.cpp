@@ -125,13 +125,25 @@ TEST_CASE("12.2 a primitive that crosses a plane is listed on both sides") {
     CHECK_FALSE(holds(root.left, 1));
 }
 
-TEST_CASE("12.2 an axis whose middle divides nothing is skipped; a pile nothing divides is a leaf") {
+TEST_CASE("12.2 a cut that copies more than half the list is skipped; a pile nothing divides is a leaf") {
+    const auto rod = [](Real y) { return Triangle(Vec3(-3, y, 0), Vec3(3, y, 0), Vec3(3, y + Real(0.2), 0)); };
     // Three rods along x, stacked in y: every rod crosses x's middle, so the root cuts y.
     SurfaceList rods;
-    for (Real y : {Real(-2), Real(0), Real(2)})
-        rods.add(Triangle(Vec3(-3, y, 0), Vec3(3, y, 0), Vec3(3, y + Real(0.2), 0)));
+    for (Real y : {Real(-2), Real(0), Real(2)}) rods.add(rod(y));
     const Bsp bsp(rods, BspBuild::midpoint, 1);
     CHECK(bsp.node(bsp.root()).axis == 1);
+    // Two rods and two balls: x's middle copies two of four (3 + 3 listed, not more than
+    // 1.5 x 4): cut. Three rods and a ball: it would copy three (3 + 4 listed): y instead.
+    SurfaceList half;
+    half.add(rod(-2));
+    half.add(rod(2));
+    half.add(Sphere(Vec3(-2.5, 0, 0), Real(0.2)));
+    half.add(Sphere(Vec3(2.5, 0, 0), Real(0.2)));
+    const Bsp cut(half, BspBuild::midpoint, 1);
+    CHECK(cut.node(cut.root()).axis == 0);
+    rods.add(Sphere(Vec3(2.5, 1, 0), Real(0.2)));
+    const Bsp skip(rods, BspBuild::midpoint, 1);
+    CHECK(skip.node(skip.root()).axis == 1);
     // Three copies of one ball: no plane separates them, so one leaf, not a deep tree of
     // duplicated lists.
     SurfaceList pile;

@@ -70,8 +70,8 @@ inline Box above_plane(Box cell, int axis, Real split) {
 
 // Exercise 12.2: the course's build. Cut the cell at its middle along axis depth % 3 and
 // build each half from the items sorted to it, one level deeper. A list of at most
-// leaf_size() items, or one at max_depth(), is a leaf; so is one that no axis's middle
-// divides (every item would go to both sides).
+// leaf_size() items, or one at max_depth(), is a leaf. A cut that sends more than half the
+// items to both sides is not made: the next axis is tried, and after all three, a leaf.
 BspRef build_midpoint(BspBuilder& builder, std::span<const std::uint32_t> items, const Box& cell, int depth);
 
 // The surface-area-heuristic build: the plane of least expected cost (a node visit plus the
