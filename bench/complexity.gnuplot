@@ -15,8 +15,8 @@ do for [input in 'terrain soup stadium'] {
     set output out.'/complexity-'.input.'.png'
     set multiplot layout 1,2 title input
     set ylabel 'ns per ray'
-    plot for [i=1:6] rows(input, word(structures, i)) using 2:5 with linespoints lc i pt i title word(structures, i)
+    plot for [i=1:words(structures)] rows(input, word(structures, i)) using 2:5 with linespoints lc i pt i title word(structures, i)
     set ylabel 'build seconds'
-    plot for [i=2:6] rows(input, word(structures, i)) using 2:4 with linespoints lc i pt i title word(structures, i)
+    plot for [i=2:words(structures)] rows(input, word(structures, i)) using 2:4 with linespoints lc i pt i title word(structures, i)
     unset multiplot
 }
