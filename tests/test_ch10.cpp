@@ -5,7 +5,6 @@
 // and on rays aimed exactly at a closed mesh's shared edges and vertices.
 #include "accel/accel.hpp"
 #include "geometry/procedural.hpp"
-#include "geometry/watertight.hpp"
 #include "io/scene_file.hpp"
 #include "render/render.hpp"
 #include "support.hpp"
@@ -237,29 +236,3 @@ TEST_CASE("10.4 a tree tests far fewer primitives per ray than brute force, the 
     CHECK(work[AccelKind::bvh_sah] <= work[AccelKind::bvh_sort]);
 }
 }
-
-#if !RTLAB_STUDENT_TRIANGLE
-TEST_CASE("10.5 the mesh leaves' prepared ray gives exercise 3.2's answers bit for bit") {
-    // The fast path tests triangles with geometry/watertight.hpp, whose per-ray work is done
-    // once; it must agree with the reference 3.2 exactly, or the fast path and brute force
-    // could differ. Rays at random, along axes (with -0), and through vertices and edges.
-    rt::test::Rng rng;
-    int differ = 0, hits = 0;
-    for (int k = 0; k < 100000; ++k) {
-        const Vec3 a = rng.vec(-1, 1), b = rng.vec(-1, 1), c = k % 5 ? rng.vec(-1, 1) : a + (b - a) * Real(0.5);
-        const Vec3 o = rng.vec(-3, 3);
-        Vec3 target = k % 3 == 0 ? a : (k % 3 == 1 ? (a + b) * Real(0.5) : (a + b + c) / Real(3));
-        Vec3 d = target - o;
-        if (k % 11 == 0) d = Vec3(k % 2 ? -Real(0) : Real(0), Real(0), d.z);  // along z, signed zeros
-        const Ray ray{o, d};
-        const Interval iv{rng(0, 0.5), k % 4 ? kInfinity : rng(0.5, 2)};
-        TriangleHit want{}, got{};
-        const bool w = ray_triangle_watertight(ray, a, b, c, iv, want);
-        const bool g = hit(WatertightRay(ray), a, b, c, iv, got);
-        hits += w;
-        differ += w != g || (w && (want.t != got.t || want.beta != got.beta || want.gamma != got.gamma));
-    }
-    CHECK(hits > 10000);
-    CHECK(differ == 0);
-}
-#endif

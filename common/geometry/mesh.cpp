@@ -1,7 +1,6 @@
 #include "geometry/mesh.hpp"
 
 #include "geometry/limits.hpp"
-#include "geometry/watertight.hpp"
 
 #include <cmath>
 #include <stdexcept>
@@ -74,42 +73,16 @@ Mesh::Mesh(MeshData data) {
     accel_ = build_accel(*data_);
 }
 
-namespace {
-
-// The triangle test of the mesh leaves: the prepared ray (bit for bit exercise 3.2's
-// reference), or, on the exercises track while chapter 03 is the student's, the student's
-// exercise 3.2 itself (geometry/watertight.hpp says why).
-#if RTLAB_STUDENT_TRIANGLE
-struct LeafRay {
-    const Ray& ray;
-    explicit LeafRay(const Ray& r) : ray(r) {}
-    bool hit(const Vec3& a, const Vec3& b, const Vec3& c, Interval iv, TriangleHit& h) const {
-        return ray_triangle_watertight(ray, a, b, c, iv, h);
-    }
-};
-#else
-struct LeafRay {
-    WatertightRay ray;
-    explicit LeafRay(const Ray& r) : ray(r) {}
-    bool hit(const Vec3& a, const Vec3& b, const Vec3& c, Interval iv, TriangleHit& h) const {
-        return rt::hit(ray, a, b, c, iv, h);
-    }
-};
-#endif
-
-}  // namespace
-
 bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
     const MeshAccel& a = mesh.accel();
     if (!might_hit(mesh.box(), ray, interval)) return false;
-    const LeafRay leaf(ray);
     const Real t_min = interval.min;
     Real best_t = interval.max;
     std::uint32_t best = kNone;
     return closest_hit(a.bvh, ray, interval, [&](std::uint32_t k, Interval& iv) {
         const auto& c = a.corners[k];
         TriangleHit h;
-        if (!leaf.hit(c[0], c[1], c[2], Interval{t_min, widen_far(iv.max)}, h)) return false;
+        if (!ray_triangle_watertight(ray, c[0], c[1], c[2], Interval{t_min, widen_far(iv.max)}, h)) return false;
         const std::uint32_t index = a.bvh.items[k];
         // Inside the interval asked for, and closer in the one order (lower index at equal t).
         if (!(h.t <= best_t) || (h.t == best_t && index > best)) return false;
@@ -124,11 +97,10 @@ bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
 bool occluded(const Mesh& mesh, const Ray& ray, Interval interval) {
     if (!might_hit(mesh.box(), ray, interval)) return false;
     const MeshAccel& a = mesh.accel();
-    const LeafRay leaf(ray);
     return any_hit(a.bvh, ray, interval, [&](std::uint32_t k, Interval& iv) {
         const auto& c = a.corners[k];
         TriangleHit h;
-        return leaf.hit(c[0], c[1], c[2], iv, h);
+        return ray_triangle_watertight(ray, c[0], c[1], c[2], iv, h);
     });
 }
 
