@@ -55,7 +55,7 @@ std::size_t FastBvh::memory_bytes(const SurfaceList& surfaces) const {
 
 std::size_t FastBvh::node_count(const SurfaceList& surfaces) const {
     std::size_t nodes = bvh_.nodes.size();
-    for_each_mesh_accel(surfaces, [&](const MeshAccel& a) { nodes += a.bvh.nodes.size(); });
+    for_each_mesh_accel(surfaces, [&](const MeshAccel& a) { nodes += a.wide.nodes.size(); });
     return nodes;
 }
 

@@ -46,6 +46,8 @@ std::shared_ptr<const MeshAccel> build_accel(const MeshData& d) {
         const auto& t = d.triangles[item];
         a->corners.push_back({d.positions[t[0]], d.positions[t[1]], d.positions[t[2]]});
     }
+    a->wide = collapse(a->bvh);
+    a->bvh.nodes = {};
     return a;
 }
 
@@ -79,7 +81,7 @@ bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
     const Real t_min = interval.min;
     Real best_t = interval.max;
     std::uint32_t best = kNone;
-    return closest_hit(a.bvh, ray, interval, [&](std::uint32_t k, Interval& iv) {
+    return closest_hit(a.wide, ray, interval, [&](std::uint32_t k, Interval& iv) {
         const auto& c = a.corners[k];
         TriangleHit h;
         if (!ray_triangle_watertight(ray, c[0], c[1], c[2], Interval{t_min, widen_far(iv.max)}, h)) return false;
@@ -97,7 +99,7 @@ bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
 bool occluded(const Mesh& mesh, const Ray& ray, Interval interval) {
     if (!might_hit(mesh.box(), ray, interval)) return false;
     const MeshAccel& a = mesh.accel();
-    return any_hit(a.bvh, ray, interval, [&](std::uint32_t k, Interval& iv) {
+    return any_hit(a.wide, ray, interval, [&](std::uint32_t k, Interval& iv) {
         const auto& c = a.corners[k];
         TriangleHit h;
         return ray_triangle_watertight(ray, c[0], c[1], c[2], iv, h);

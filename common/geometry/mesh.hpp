@@ -2,6 +2,7 @@
 // Indexed triangle meshes. Triangles share vertices by index, so an edge common to two
 // triangles has bit-identical end points in both: what the watertight test needs.
 #include "core/bvh.hpp"
+#include "core/bvh4.hpp"
 #include "geometry/triangle.hpp"
 
 #include <array>
@@ -42,10 +43,13 @@ struct MeshHit {
 // triangle's corners copied out in the BVH's leaf order, so a leaf reads its triangles from
 // consecutive memory instead of through two index arrays.
 struct MeshAccel {
-    FlatBvh bvh;
+    FlatBvh bvh;  // its item slots (bvh.items); the binary nodes are dropped once collapsed
+    Bvh4 wide;    // what queries search
     std::vector<std::array<Vec3, 3>> corners;  // corners[k]: triangle bvh.items[k]
 
-    std::size_t memory_bytes() const { return bvh.memory_bytes() + corners.size() * sizeof(corners[0]); }
+    std::size_t memory_bytes() const {
+        return bvh.memory_bytes() + wide.memory_bytes() + corners.size() * sizeof(corners[0]);
+    }
 };
 
 // A mesh: geometry only. Its data is shared, so copies of a Mesh (two surfaces wearing
