@@ -20,7 +20,8 @@ void fill(const FlatBvh& bvh, std::uint32_t b, Bvh4& out, std::uint32_t at) {
     while (n < 4) {
         int open = -1;
         for (int i = 0; i < n; ++i)
-            if (!bvh.nodes[kids[i]].leaf() && (open < 0 || half_area(bvh.nodes[kids[i]]) > half_area(bvh.nodes[kids[open]])))
+            if (!bvh.nodes[kids[i]].leaf() &&
+                (open < 0 || half_area(bvh.nodes[kids[i]]) > half_area(bvh.nodes[kids[open]])))
                 open = i;
         if (open < 0) break;
         const std::uint32_t first = bvh.nodes[kids[open]].first;

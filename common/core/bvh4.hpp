@@ -7,10 +7,10 @@
 // ray enters, and so the hits it finds, are the binary tree's.
 #include "core/bvh.hpp"
 
-#include <algorithm>
 #include <cstdint>
 #include <cstring>
 #include <limits>
+#include <utility>
 #include <vector>
 
 namespace rt {
@@ -109,7 +109,8 @@ bool closest_hit(const Bvh4& bvh, const Ray& ray, Interval interval, Leaf&& leaf
         int order[4], n = 0;
         for (int c = 0; c < 4; ++c)
             if (t[c] != kInfinity) order[n++] = c;
-        std::sort(order, order + n, [&](int a, int b) { return t[a] > t[b]; });
+        for (int i = 1; i < n; ++i)  // at most four: insertion sort, farthest first
+            for (int j = i; j > 0 && t[order[j]] > t[order[j - 1]]; --j) std::swap(order[j], order[j - 1]);
         for (int i = 0; i < n; ++i) {
             const int c = order[i];
             stack[top++] = Entry{node.first[c], node.count[c], t[c]};
