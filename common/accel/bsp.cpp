@@ -54,7 +54,7 @@ namespace {
 // cell meets that side (the ratio of surface areas). A side left empty earns a bonus: a ray
 // through it costs nothing. A primitive test costs about as much as kIntersect visits.
 constexpr Real kTraverse = 1, kIntersect = 16, kEmptyBonus = Real(0.5);
-// Lists longer than this try 32 evenly spaced planes per axis (binning); shorter ones try a
+// Lists longer than this try the 31 planes between 32 equal bins per axis; shorter ones try a
 // plane just outside every box's faces, which is exact and finds the empty space around an
 // object however small it is in its cell.
 constexpr std::size_t kExactBelow = 512;
@@ -105,7 +105,7 @@ void exact_planes(const BspBuilder& b, std::span<const std::uint32_t> items, con
     for (Real x : hi) count(x + 3 * pad);
 }
 
-// 32 evenly spaced planes: how many boxes start and end in each bin; a plane between bins has
+// The 31 planes between 32 equal bins: how many boxes start and end in each bin; a plane between bins has
 // below it every box that starts before it, above it every box that ends after it.
 void binned_planes(const BspBuilder& b, std::span<const std::uint32_t> items, const Box& cell, int axis, Split& best) {
     std::array<std::size_t, kBins> starts{}, ends{};
@@ -154,9 +154,10 @@ Bsp::Bsp(const SurfaceList& surfaces, BspBuild how, std::size_t leaf_size) : pri
         boxes.push_back(rt::bounding_box(surfaces, p));
         bounds_.expand(boxes.back());
     }
-    // The pad covers rounding in where a hit and a plane crossing are computed: a few
-    // hundred units in the last place of the scene's largest coordinate (and never below a
-    // millionth of it, so that double has as much room as float needs).
+    // The pad covers rounding in where a hit and a plane crossing are computed: 256 units in
+    // the last place of the scene's largest coordinate, and never less than 2^-20 of it. In
+    // float the first decides (3e-5 of the size); in double the floor does (1e-6): far more
+    // than double's rounding needs, at the price of a few more copies next to planes.
     const Vec3 reach = glm::max(glm::abs(bounds_.min), glm::abs(bounds_.max));
     const Vec3 extent = bounds_.max - bounds_.min;
     const Real size = std::max({reach.x, reach.y, reach.z, extent.x, extent.y, extent.z});

@@ -77,7 +77,7 @@ BspRef build_midpoint(BspBuilder& builder, std::span<const std::uint32_t> items,
 // The surface-area-heuristic build: the plane of least expected cost (a node visit plus the
 // primitives tested on each side, weighted by the chance a ray through the cell meets that
 // side), if it beats a leaf; the planes tried are just outside every box's faces, or, for
-// long lists, 32 a axis. Library code (bsp.cpp).
+// long lists, the 31 between 32 equal bins per axis. Library code (bsp.cpp).
 BspRef build_sah(BspBuilder& builder, std::span<const std::uint32_t> items, const Box& cell, int depth);
 
 enum class BspBuild { midpoint, sah };
