@@ -126,8 +126,10 @@ HitRecord record(const Mesh& mesh, const Ray&, const MeshHit& h, SurfaceRef who)
 Mesh Mesh::smoothed() const {
     MeshData data = *data_;
     compute_vertex_normals(data);
-    Mesh result(std::move(data));
-    result.dropped_ = dropped_;  // what this mesh dropped when it was made
+    // Only the normals change: the triangles, their box and their tree are this mesh's, so
+    // they are shared, not validated and built again.
+    Mesh result = *this;
+    result.data_ = std::make_shared<const MeshData>(std::move(data));
     return result;
 }
 
