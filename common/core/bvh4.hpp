@@ -2,8 +2,8 @@
 // A 4-wide BVH: the binary SAH tree of core/bvh.hpp collapsed so that each node holds the
 // boxes of up to four children side by side (book §10.5). One node visit tests four boxes,
 // and the tests are the same arithmetic on four lanes, which the compiler turns into SIMD
-// instructions; a ray visits about a third as many nodes as in the binary tree, each one
-// cache line of boxes. Each lane's test is exactly enter() of core/bvh.hpp, so the boxes a
+// instructions; the tree is about half as deep as the binary one, and a node's four boxes
+// sit in 96 consecutive bytes. Each lane's test is exactly enter() of core/bvh.hpp, so the boxes a
 // ray enters, and so the hits it finds, are the binary tree's.
 #include "core/bvh.hpp"
 
