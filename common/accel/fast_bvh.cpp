@@ -31,7 +31,7 @@ bool FastBvh::occluded(const SurfaceList& surfaces, const Ray& ray, Interval int
 
 namespace {
 
-// Every distinct mesh's BVH below the surfaces, instances included, once each.
+// Every distinct mesh's BVH below the surfaces, in instances and CSG objects too, once each.
 template <class F>
 void for_each_mesh_accel(const SurfaceList& surfaces, F&& f) {
     std::set<const MeshAccel*> seen;
@@ -40,6 +40,9 @@ void for_each_mesh_accel(const SurfaceList& surfaces, F&& f) {
             if (seen.insert(&mesh->accel()).second) f(mesh->accel());
         } else if (const auto* instance = std::get_if<Instance>(&shape)) {
             self(instance->base(), self);
+        } else if (const auto* csg = std::get_if<Csg>(&shape)) {
+            self(*csg->left().shape, self);
+            self(*csg->right().shape, self);
         }
     };
     for (const Surface& s : surfaces.surfaces()) visit(s.shape, visit);

@@ -41,6 +41,8 @@ json hit_json(const Scene& scene, const HitRecord& h) {
            {"normal", to_json(h.normal)}};
     if (h.shading_normal != h.normal) j["shading_normal"] = to_json(h.shading_normal);
     if (h.primitive != kNone) j["triangle"] = h.primitive;
+    if (h.part != kNone && h.surface < scene.surfaces.size())  // which operand of a CSG object
+        j["operand"] = describe_part(scene.surfaces[h.surface].shape, h.part);
     return j;
 }
 

@@ -123,6 +123,15 @@ void draw_shape(const Shape& shape, const Affine& to_world, const PageProjection
         out += "\"/>\n";
     } else if (const auto* in = std::get_if<Instance>(&shape)) {
         draw_shape(in->base(), in->to_world().then(to_world), proj, unit, out);
+    } else if (const auto* box = std::get_if<Cuboid>(&shape)) {
+        std::vector<P2> pts;  // the silhouette of a (transformed) box: the hull of its corners
+        for (int k = 0; k < 8; ++k)
+            pts.push_back(proj(to_world.point(Vec3(k & 1 ? box->max.x : box->min.x, k & 2 ? box->max.y : box->min.y,
+                                                   k & 4 ? box->max.z : box->min.z))));
+        out += polygon(hull(pts), kFill);
+    } else if (const auto* csg = std::get_if<Csg>(&shape)) {  // both operands, as outlines
+        draw_shape(*csg->left().shape, to_world, proj, unit, out);
+        draw_shape(*csg->right().shape, to_world, proj, unit, out);
     }
 }
 

@@ -30,6 +30,7 @@ struct HitRecord {
     SurfaceId surface = kNone;
     MaterialId material = 0;
     std::uint32_t primitive = kNone;  // which triangle of a mesh, for picking
+    std::uint32_t part = kNone;       // which operand of a CSG object (Csg::describe), for picking
     // Barycentric coordinates, for the shapes that have them (triangles).
     bool has_barycentrics = false;
     Real beta = 0;

@@ -11,8 +11,10 @@ Instance::Instance(std::shared_ptr<const Shape> base, const Affine& to_world)
 
 bool hit(const Instance& instance, const Ray& ray, Interval interval, InstanceHit& result) {
     if (!might_hit(instance.box(), ray, interval)) return false;
-    // The owner is stamped by record() below, on the world-space record.
-    return hit_record(instance.base(), object_ray(instance.to_object(), ray), interval, SurfaceRef{}, result.local);
+    // The owner is stamped by record() below, on the world-space record. The material is
+    // left unset so that one a CSG operand chose (geometry/csg.hpp) can be told apart.
+    return hit_record(instance.base(), object_ray(instance.to_object(), ray), interval, SurfaceRef{kNone, kNone},
+                      result.local);
 }
 
 bool occluded(const Instance& instance, const Ray& ray, Interval interval) {
@@ -26,7 +28,7 @@ HitRecord record(const Instance& instance, const Ray&, const InstanceHit& h, Sur
     rec.normal = world_normal(instance.to_object(), h.local.normal);
     rec.shading_normal = world_normal(instance.to_object(), h.local.shading_normal);
     rec.surface = who.surface;
-    rec.material = who.material;
+    rec.material = h.local.material != kNone ? h.local.material : who.material;
     return rec;
 }
 

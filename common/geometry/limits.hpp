@@ -42,6 +42,8 @@ inline constexpr Range cube_subdivisions{"cube subdivisions", 1, 256, "",
 inline constexpr Range terrain_cells{"terrain cells", 1, 2048, "", "/$defs/surface/oneOf/6/properties/cells"};
 inline constexpr Range soup_count{"soup triangles", 1, 1000000, "", "/$defs/surface/oneOf/7/properties/count"};
 inline constexpr Range soup_seed{"soup seed", 0, 2147483647, "", "/$defs/surface/oneOf/7/properties/seed"};
+inline constexpr Range csg_operands{"CSG operands", 2, 1024, "", "/$defs/surface/oneOf/10/properties/operands"};
+inline constexpr Range csg_thin{"CSG thin", 0, 1e8, "", "/$defs/surface/oneOf/10/properties/thin"};
 // Resources: inputs past these are refused before any work is spent on them.
 inline constexpr Range json_depth{"JSON nesting depth", 1, 32, "", ""};
 inline constexpr Range scene_file_bytes{"scene file size", 0, 16 << 20, "bytes", ""};
@@ -65,6 +67,7 @@ inline constexpr Range all[] = {coordinate,        length,
                                 polygon_vertices,  icosphere_subdivisions,
                                 cube_subdivisions, terrain_cells,
                                 soup_count,        soup_seed,
+                                csg_operands,      csg_thin,
                                 json_depth,        scene_file_bytes,
                                 obj_file_bytes,    obj_face_corners,
                                 mesh_vertices,     mesh_triangles,

@@ -7,6 +7,8 @@ std::size_t memory_bytes(const Shape& shape) {
     if (const auto* polygon = std::get_if<Polygon>(&shape))
         return sizeof(Shape) + polygon->vertices().size() * (sizeof(Vec3) + sizeof(Vec2));
     if (const auto* instance = std::get_if<Instance>(&shape)) return sizeof(Shape) + memory_bytes(instance->base());
+    if (const auto* csg = std::get_if<Csg>(&shape))
+        return sizeof(Shape) + memory_bytes(*csg->left().shape) + memory_bytes(*csg->right().shape);
     return sizeof(Shape);
 }
 

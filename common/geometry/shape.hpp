@@ -2,6 +2,8 @@
 // A shape is geometry only: one of a closed set of plain structs. Queries on a Shape are a
 // switch over that set (std::visit), not a virtual call through a pointer, so the compiler
 // can inline each kind's test into the loop that calls it.
+#include "geometry/csg.hpp"
+#include "geometry/cuboid.hpp"
 #include "geometry/instance.hpp"
 #include "geometry/mesh.hpp"
 #include "geometry/polygon.hpp"
@@ -13,13 +15,13 @@
 namespace rt {
 
 // A struct rather than an alias so that Instance can name it before it is complete.
-struct Shape : std::variant<Sphere, Triangle, Polygon, Mesh, Instance> {
+struct Shape : std::variant<Sphere, Triangle, Polygon, Mesh, Instance, Cuboid, Csg> {
     using variant::variant;
 };
 
 // The kind's name, as scene files and --pick say it.
 inline const char* shape_kind(const Shape& shape) {
-    constexpr const char* names[] = {"sphere", "triangle", "polygon", "mesh", "instance"};
+    constexpr const char* names[] = {"sphere", "triangle", "polygon", "mesh", "instance", "box", "csg"};
     return names[shape.index()];
 }
 
@@ -31,7 +33,7 @@ std::size_t memory_bytes(const Shape& shape);
 // shape's own test finds the small result; `record` builds everything else from it.
 template <class S>
 bool hit_record(const S& shape, const Ray& ray, Interval interval, SurfaceRef who, HitRecord& rec) {
-    typename S::Hit h;  // SphereHit, TriangleHit, PolygonHit or MeshHit
+    typename S::Hit h;  // SphereHit, TriangleHit, PolygonHit, MeshHit, ...
     if (!hit(shape, ray, interval, h)) return false;
     rec = record(shape, ray, h, who);
     return true;
@@ -45,7 +47,7 @@ inline bool hit_record(const Shape& shape, const Ray& ray, Interval interval, Su
 // a mesh has an overload of its own (geometry/mesh.hpp) that stops at its first triangle.
 template <class S>
 bool occluded(const S& shape, const Ray& ray, Interval interval) {
-    typename S::Hit h;  // SphereHit, TriangleHit, PolygonHit or MeshHit
+    typename S::Hit h;
     return hit(shape, ray, interval, h);
 }
 

@@ -54,10 +54,38 @@ Light read_light(const Fields& f) {
     f.fail("type", "unknown light type \"" + type + "\" (expected " + type_names(light_types()) + ")");
 }
 
+// What reading a shape may need besides its own fields: a CSG object's operands name
+// materials and shapes of the file.
+struct Loader {
+    const JsonReader& reader;
+    const std::map<std::string, Material>& materials;
+    std::map<std::string, MaterialId>& used;  // materials kept, by name
+    Scene& scene;
+    const std::map<std::string, std::shared_ptr<const Shape>>& shapes;
+    std::map<std::string, int>& shape_uses;
+
+    // The id of the material a "material" key names, keeping it on first use.
+    MaterialId material(const Fields& f) const {
+        const std::string name = f.text("material");
+        const auto it = materials.find(name);
+        if (it == materials.end()) f.fail("material", "no material named \"" + name + "\" in /materials");
+        auto [slot, added] = used.emplace(name, 0);
+        if (added) slot->second = scene.add_material(it->second);
+        return slot->second;
+    }
+};
+
+Shape read_csg(const Loader& loader, const Fields& f);
+
 // The shape of one /surfaces (or /shapes) entry, by its type's module. Keys every type
 // takes: "smooth" (meshes only) gives a mesh vertex normals for smooth shading.
-Shape read_shape(const Fields& f, std::vector<const char*> common) {
+Shape read_shape(const Loader& loader, const Fields& f, std::vector<const char*> common) {
     const std::string type = f.text("type");
+    if (type == "csg") {
+        common.insert(common.end(), {"type", "op", "operands", "thin"});
+        f.only(common);
+        return read_csg(loader, f);
+    }
     for (const SurfaceType& t : surface_types()) {
         if (type != t.name) continue;
         common.push_back("type");
@@ -78,7 +106,72 @@ Shape read_shape(const Fields& f, std::vector<const char*> common) {
         }
     }
     if (type == "instance") f.fail("type", "an instance names a shape of /shapes; it cannot be one there");
-    f.fail("type", "unknown surface type \"" + type + "\" (expected " + type_names(surface_types()) + " or instance)");
+    f.fail("type",
+           "unknown surface type \"" + type + "\" (expected " + type_names(surface_types()) + ", csg or instance)");
+}
+
+// A shape seen through the entry's "transform", if it has one: an instance of it, which must
+// stay where coordinates may be (limits.hpp), as the shapes of the file do.
+std::shared_ptr<const Shape> transformed(const Fields& f, std::shared_ptr<const Shape> base) {
+    if (!f.has("transform")) return base;
+    const Affine to_world = read_transform(f, "transform");
+    if (to_world.is_identity()) return base;
+    auto shape = std::make_shared<const Shape>(Instance(base, to_world));  // read_transform refused a singular one
+    const Box box = bounding_box(*shape);
+    for (const Vec3& corner : {box.min, box.max})
+        for (int k = 0; k < 3; ++k)
+            if (!limits::contains(limits::coordinate, double(corner[k])))
+                f.fail("transform", "moves the shape past the coordinate limits (" +
+                                        limits::refuse(limits::coordinate, double(corner[k])) + ")");
+    return shape;
+}
+
+// One operand of a CSG object: any solid surface entry (an instance of /shapes too), with
+// its own material and name if it gives them.
+CsgOperand read_operand(const Loader& loader, const Fields& f) {
+    std::shared_ptr<const Shape> base;
+    if (f.text("type") == "instance") {
+        f.only({"type", "name", "material", "shape", "transform"});
+        const std::string name = f.text("shape");
+        const auto it = loader.shapes.find(name);
+        if (it == loader.shapes.end()) f.fail("shape", "no shape named \"" + name + "\" in /shapes");
+        ++loader.shape_uses[name];
+        base = it->second;
+    } else {
+        base = std::make_shared<const Shape>(read_shape(loader, f, {"name", "material", "transform"}));
+    }
+    const std::string why = not_solid(*base);
+    if (!why.empty()) f.fail("", "a CSG operand must be a closed solid: " + why);
+    CsgOperand operand{transformed(f, base), kNone, f.text("name", "")};
+    if (f.has("material")) operand.material = loader.material(f);
+    return operand;
+}
+
+// {"type": "csg", "op": "union" | "intersection" | "difference", "operands": [A, B, C, ...],
+// "thin": length}: (A op B) op C ..., so a difference takes every later operand from the first.
+Shape read_csg(const Loader& loader, const Fields& f) {
+    const std::string name = f.text("op");
+    CsgOp op{};
+    bool known = false;
+    for (CsgOp o : {CsgOp::union_of, CsgOp::intersection, CsgOp::difference})
+        if (name == csg_op_name(o)) op = o, known = true;
+    if (!known) f.fail("op", "unknown CSG operation \"" + name + "\" (expected union, intersection or difference)");
+    const std::vector<Fields> list = f.objects("operands");
+    if (!limits::contains(limits::csg_operands, double(list.size())))
+        f.fail("operands", limits::refuse(limits::csg_operands, double(list.size())));
+    const Real thin = f.has("thin") ? f.number("thin", limits::csg_thin) : Real(-1);
+    try {
+        CsgOperand result = read_operand(loader, list[0]);
+        for (std::size_t i = 1; i < list.size(); ++i) {
+            // Every level but the top takes the default thickness of its own size.
+            const Real level_thin = i + 1 == list.size() ? thin : Real(-1);
+            result = CsgOperand{
+                std::make_shared<const Shape>(Csg(op, std::move(result), read_operand(loader, list[i]), level_thin))};
+        }
+        return *result.shape;
+    } catch (const std::invalid_argument& e) {  // an empty intersection
+        f.fail("", e.what());
+    }
 }
 
 void count_triangles(const Shape& shape, SceneSummary& summary) {
@@ -171,16 +264,18 @@ Scene load_scene_text(const std::string& text, const std::string& filename, cons
     // Named shapes, read once and shared by every instance that names them.
     std::map<std::string, std::shared_ptr<const Shape>> shapes;
     std::map<std::string, int> shape_uses;
+    std::map<std::string, MaterialId> used;
+    const Loader loader{reader, materials, used, scene, shapes, shape_uses};
     if (top.has("shapes")) {
         const Fields all(reader, doc["shapes"], "/shapes");
         for (const auto& [name, s] : doc["shapes"].items())
-            shapes.emplace(name, std::make_shared<const Shape>(read_shape(Fields(reader, s, "/shapes/" + name), {})));
+            shapes.emplace(name,
+                           std::make_shared<const Shape>(read_shape(loader, Fields(reader, s, "/shapes/" + name), {})));
     }
 
     if (!top.has("surfaces")) top.fail("", "missing key 'surfaces'");
     const json& ss = doc["surfaces"];
     if (!ss.is_array()) top.fail("surfaces", "must be an array");
-    std::map<std::string, MaterialId> used;
     for (std::size_t i = 0; i < ss.size(); ++i) {
         const Fields f(reader, ss[i], "/surfaces/" + std::to_string(i));
         std::shared_ptr<const Shape> base;
@@ -193,37 +288,20 @@ Scene load_scene_text(const std::string& text, const std::string& filename, cons
             base = it->second;
             reused = shape_uses[name]++ > 0;
         } else {
-            base = std::make_shared<const Shape>(read_shape(f, {"name", "material", "transform"}));
+            base = std::make_shared<const Shape>(read_shape(loader, f, {"name", "material", "transform"}));
         }
-        const Affine to_world = f.has("transform") ? read_transform(f, "transform") : Affine{};
-        Shape shape = *base;  // a mesh's copy shares its triangles; other shapes are copied
-        if (!to_world.is_identity()) {
-            shape = Instance(base, to_world);  // read_transform has refused a singular one
+        // A mesh's copy shares its triangles; other shapes are copied.
+        const std::shared_ptr<const Shape> placed = transformed(f, base);
+        Shape shape = *placed;
+        if (placed != base)
             ++summary.instances;
-            // The transformed shape must stay where coordinates may be (limits.hpp), as the
-            // shapes of the file do.
-            const Box box = bounding_box(shape);
-            for (const Vec3& corner : {box.min, box.max})
-                for (int k = 0; k < 3; ++k)
-                    if (!limits::contains(limits::coordinate, double(corner[k])))
-                        f.fail("transform", "moves the shape past the coordinate limits (" +
-                                                limits::refuse(limits::coordinate, double(corner[k])) + ")");
-        } else if (f.has("transform")) {
+        else if (f.has("transform"))
             ++summary.identity_transforms;  // costs nothing per ray: the shape is used as it is
-        }
         // Saved memory: a reused shape that is not copied (an instance, or a mesh's shared data).
         if (reused && (std::holds_alternative<Instance>(shape) || std::holds_alternative<Mesh>(shape)))
             summary.shared_bytes += memory_bytes(*base);
         if (!reused) count_triangles(*base, summary);  // stored once, counted once
-        MaterialId material = 0;
-        if (f.has("material")) {
-            const std::string name = f.text("material");
-            auto it = materials.find(name);
-            if (it == materials.end()) f.fail("material", "no material named \"" + name + "\" in /materials");
-            auto [slot, added] = used.emplace(name, 0);
-            if (added) slot->second = scene.add_material(it->second);
-            material = slot->second;
-        }
+        const MaterialId material = f.has("material") ? loader.material(f) : 0;
         scene.surfaces.add(std::move(shape), material, f.text("name", ""));
     }
     summary.surfaces = int(ss.size());

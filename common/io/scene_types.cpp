@@ -12,6 +12,7 @@ const std::vector<SurfaceType>& surface_types() {
         {"cube", {"center", "size", "subdivisions"}, read_cube},
         {"terrain", {"center", "size", "height", "cells"}, read_terrain},
         {"soup", {"center", "size", "scale", "count", "seed"}, read_soup},
+        {"box", {"min", "max"}, read_box},
     };
     return types;
 }

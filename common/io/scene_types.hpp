@@ -46,6 +46,7 @@ Shape read_icosphere(const Fields& f);
 Shape read_cube(const Fields& f);
 Shape read_terrain(const Fields& f);
 Shape read_soup(const Fields& f);
+Shape read_box(const Fields& f);
 Light read_point_light(const Fields& f);
 Light read_directional_light(const Fields& f);
 // Materials have one kind so far; its keys are checked here too.

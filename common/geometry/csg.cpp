@@ -1,0 +1,227 @@
+#include "geometry/csg.hpp"
+
+#include "geometry/shape.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <map>
+#include <stdexcept>
+#include <utility>
+
+namespace rt {
+
+const char* csg_op_name(CsgOp op) {
+    constexpr const char* names[] = {"union", "intersection", "difference"};
+    return names[int(op)];
+}
+
+void drop_thin(SpanList& spans, Real thin, const Vec3& direction) {
+    if (!(thin > 0) || spans.empty()) return;
+    const Real length = glm::length(direction);
+    SpanList kept;
+    kept.reserve(spans.size());
+    for (const Span& s : spans) {
+        if ((s.out.t - s.in.t) * length < thin) continue;  // a sliver of solid
+        if (!kept.empty() && (s.in.t - kept.back().out.t) * length < thin)
+            kept.back().out = s.out;  // a sliver of air between two spans: one span
+        else
+            kept.push_back(s);
+    }
+    spans = std::move(kept);
+}
+
+Real default_thin(const Box& box) {
+    const Vec3 size = box.max - box.min;
+    const Real extent = std::max({size.x, size.y, size.z});
+    return extent * std::max(Real(1e-6), 64 * std::numeric_limits<Real>::epsilon());
+}
+
+namespace {
+
+// Does every edge of the mesh have exactly one partner running the other way? Then the
+// triangles enclose a volume, with their counter-clockwise sides facing out.
+bool closed(const MeshData& d) {
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;  // directed edge -> uses
+    for (const auto& t : d.triangles)
+        for (int k = 0; k < 3; ++k) ++edges[{t[k], t[(k + 1) % 3]}];
+    for (const auto& [edge, uses] : edges) {
+        if (uses != 1) return false;
+        const auto back = edges.find({edge.second, edge.first});
+        if (back == edges.end() || back->second != 1) return false;
+    }
+    return true;
+}
+
+std::uint32_t leaf_count(const Shape& shape) {
+    if (const auto* c = std::get_if<Csg>(&shape)) return c->leaves();
+    if (const auto* in = std::get_if<Instance>(&shape)) return leaf_count(in->base());
+    return 1;
+}
+
+// The nearest CSG object inside a shape (itself, or under instances), if any.
+const Csg* csg_in(const Shape& shape) {
+    if (const auto* c = std::get_if<Csg>(&shape)) return c;
+    if (const auto* in = std::get_if<Instance>(&shape)) return csg_in(in->base());
+    return nullptr;
+}
+
+// An operand's spans, owned by the CSG above: parts numbered from `first_leaf`, material
+// the operand's where it set one and nothing below it did.
+void operand_spans(const CsgOperand& operand, std::uint32_t first_leaf, const Ray& ray, bool flip, SpanList& out) {
+    spans(*operand.shape, ray, out);
+    for (Span& s : out)
+        for (HitRecord* r : {&s.in, &s.out}) {
+            r->part = r->part == kNone ? first_leaf : r->part + first_leaf;
+            if (r->material == kNone) r->material = operand.material;
+            // A subtracted solid's surface bounds the result from the other side.
+            if (flip) r->normal = -r->normal, r->shading_normal = -r->shading_normal;
+        }
+}
+
+SpanList sphere_spans(const Sphere& s, const Ray& ray) {
+    Real t0, t1;
+    if (!sphere_roots(ray, s.center, s.radius, t0, t1)) return {};
+    const SurfaceRef none{kNone, kNone};
+    return {Span{record(s, ray, SphereHit{t0}, none), record(s, ray, SphereHit{t1}, none)}};
+}
+
+SpanList cuboid_spans(const Cuboid& box, const Ray& ray) {
+    CuboidHit enter, leave;
+    if (!cuboid_crossings(box, ray, enter, leave)) return {};
+    const SurfaceRef none{kNone, kNone};
+    return {Span{record(box, ray, enter, none), record(box, ray, leave, none)}};
+}
+
+SpanList mesh_spans(const Mesh& mesh, const Ray& ray) {
+    const Interval line{-kInfinity, kInfinity};
+    if (!might_hit(mesh.box(), ray, line)) return {};
+    const MeshAccel& a = mesh.accel();
+    std::vector<HitRecord> crossings;
+    any_hit(a.wide, ray, line, [&](std::uint32_t k, Interval& iv) {
+        const auto& c = a.corners[k];
+        TriangleHit h;
+        if (ray_triangle_watertight(ray, c[0], c[1], c[2], iv, h))
+            crossings.push_back(record(mesh, ray, MeshHit{h, a.bvh.items[k]}, SurfaceRef{kNone, kNone}));
+        return false;  // every crossing, not the first
+    });
+    // The brute-force order (t, then triangle), so the result does not depend on the tree.
+    std::sort(crossings.begin(), crossings.end(), [](const HitRecord& x, const HitRecord& y) {
+        return x.t != y.t ? x.t < y.t : x.primitive < y.primitive;
+    });
+    // Two triangles that share an edge put the same point at t's that differ by rounding:
+    // a few units in the last place of the distances involved.
+    const Box& b = mesh.box();
+    const Real scale = glm::length(b.max - b.min) + glm::length(ray.origin - (b.min + b.max) / Real(2));
+    const Real same_t = 256 * std::numeric_limits<Real>::epsilon() * scale / glm::length(ray.direction);
+    return mesh_spans(crossings, ray.direction, same_t);
+}
+
+SpanList instance_spans(const Instance& instance, const Ray& ray) {
+    SpanList local;
+    spans(instance.base(), object_ray(instance.to_object(), ray), local);
+    for (Span& s : local)
+        for (HitRecord* r : {&s.in, &s.out})  // record() stamps who; keep the operand's own
+            *r = record(instance, ray, InstanceHit{*r}, SurfaceRef{r->surface, r->material});
+    return local;
+}
+
+SpanList csg_spans(const Csg& csg, const Ray& ray) {
+    SpanList a, b;
+    operand_spans(csg.left(), 0, ray, false, a);
+    operand_spans(csg.right(), leaf_count(*csg.left().shape), ray, csg.op() == CsgOp::difference, b);
+    SpanList result = combine(csg.op(), a, b);
+    drop_thin(result, csg.thin(), ray.direction);
+    return result;
+}
+
+}  // namespace
+
+std::string not_solid(const Shape& shape) {
+    if (std::holds_alternative<Triangle>(shape)) return "a triangle has no inside";
+    if (std::holds_alternative<Polygon>(shape)) return "a polygon has no inside";
+    if (const auto* m = std::get_if<Mesh>(&shape))
+        return closed(m->data()) ? ""
+                                 : "the mesh is not closed (an edge without exactly one partner running the other way)";
+    if (const auto* in = std::get_if<Instance>(&shape)) return not_solid(in->base());
+    return "";
+}
+
+void spans(const Shape& shape, const Ray& ray, SpanList& out) {
+    if (const auto* s = std::get_if<Sphere>(&shape))
+        out = sphere_spans(*s, ray);
+    else if (const auto* c = std::get_if<Cuboid>(&shape))
+        out = cuboid_spans(*c, ray);
+    else if (const auto* m = std::get_if<Mesh>(&shape))
+        out = mesh_spans(*m, ray);
+    else if (const auto* in = std::get_if<Instance>(&shape))
+        out = instance_spans(*in, ray);
+    else if (const auto* g = std::get_if<Csg>(&shape))
+        out = csg_spans(*g, ray);
+    else
+        out.clear();  // not a solid: the Csg constructor refuses these
+}
+
+Csg::Csg(CsgOp op, CsgOperand left, CsgOperand right, Real thin)
+    : op_(op), left_(std::move(left)), right_(std::move(right)) {
+    for (const CsgOperand* o : {&left_, &right_}) {
+        if (!o->shape) throw std::invalid_argument("csg: an operand is missing");
+        const std::string why = not_solid(*o->shape);
+        if (!why.empty())
+            throw std::invalid_argument("csg: operand " +
+                                        (o->name.empty() ? std::string(shape_kind(*o->shape)) : "\"" + o->name + "\"") +
+                                        " is not a closed solid: " + why);
+    }
+    const Box a = rt::bounding_box(*left_.shape), b = rt::bounding_box(*right_.shape);
+    switch (op_) {
+        case CsgOp::union_of:
+            box_ = a;
+            box_.expand(b);
+            break;
+        case CsgOp::intersection:
+            box_ = Box{glm::max(a.min, b.min), glm::min(a.max, b.max)};
+            if (box_.empty())
+                throw std::invalid_argument("csg: the intersection is empty (its operands' boxes do not overlap)");
+            break;
+        case CsgOp::difference:  // never larger than what it is cut from
+            box_ = a;
+            break;
+    }
+    thin_ = thin < 0 ? default_thin(box_) : thin;
+    left_leaves_ = leaf_count(*left_.shape);
+    right_leaves_ = leaf_count(*right_.shape);
+}
+
+std::string Csg::describe(std::uint32_t part) const {
+    const bool on_left = part < left_leaves_;
+    const CsgOperand& o = on_left ? left_ : right_;
+    if (!on_left) part -= left_leaves_;
+    if (const Csg* inner = csg_in(*o.shape)) return inner->describe(part);
+    const std::string what = o.name.empty() ? shape_kind(*o.shape) : o.name + " (" + shape_kind(*o.shape) + ")";
+    return what + ", " + (on_left ? "left" : "right") + " of " + csg_op_name(op_);
+}
+
+std::string describe_part(const Shape& shape, std::uint32_t part) {
+    const Csg* csg = csg_in(shape);
+    return csg && part < csg->leaves() ? csg->describe(part) : "";
+}
+
+bool hit(const Csg& csg, const Ray& ray, Interval interval, CsgHit& result) {
+    if (!might_hit(csg.box(), ray, interval)) return false;
+    const SpanList list = csg_spans(csg, ray);
+    for (const Span& s : list)
+        for (const HitRecord* r : {&s.in, &s.out})
+            if (interval.contains(r->t)) {
+                result = CsgHit{*r};
+                return true;
+            }
+    return false;
+}
+
+HitRecord record(const Csg&, const Ray&, const CsgHit& h, SurfaceRef who) {
+    HitRecord rec = h.local;
+    rec.surface = who.surface;
+    if (rec.material == kNone) rec.material = who.material;
+    return rec;
+}
+
+}  // namespace rt
