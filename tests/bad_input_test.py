@@ -184,6 +184,28 @@ scene("exponent_zero", {"/materials/m/exponent": 0}, "Phong exponent must be in"
 scene("exponent_huge", {"/materials/m/exponent": 1e7}, "Phong exponent")
 scene("exponent_negative", {"/materials/m/exponent": -5}, "Phong exponent")
 scene("material_unknown_key", {"/materials/m/shininess": 3}, "unknown key 'shininess'")
+# Chapter 13: CSG objects and boxes.
+BALL = {"type": "sphere", "center": [0, 0, 0], "radius": 1}
+CSG = {"type": "csg", "op": "difference", "operands": [BALL, {"type": "box", "min": [0, 0, 0], "max": [2, 2, 2]}]}
+scene("csg_ok_but_op_unknown", {S: dict(CSG, op="subtract")}, S + "/op", "unknown CSG operation \"subtract\"")
+scene("csg_one_operand", {S: dict(CSG, operands=[BALL])}, S + "/operands", "CSG operands must be in 2..1024, not 1")
+scene("csg_operands_object", {S: dict(CSG, operands=BALL)}, S + "/operands", "must be an array of objects")
+scene("csg_too_many_operands", {S: dict(CSG, operands=[BALL] * 1025)}, "CSG operands must be in 2..1024, not 1025")
+scene("csg_operand_triangle", {S: dict(CSG, operands=[BALL, {"type": "triangle", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}])},
+      S + "/operands/1", "a CSG operand must be a closed solid: a triangle has no inside")
+scene("csg_operand_terrain", {S: dict(CSG, operands=[BALL, {"type": "terrain", "center": [0, 0, 0], "size": 2, "height": 0.1, "cells": 4}])},
+      S + "/operands/1", "the mesh is not closed")
+scene("csg_operand_bad_sphere", {S: dict(CSG, operands=[BALL, dict(BALL, radius=-1)])}, S + "/operands/1/radius", "length")
+scene("csg_operand_unknown_key", {S: dict(CSG, operands=[BALL, dict(BALL, colour=1)])}, "unknown key 'colour'")
+scene("csg_operand_unknown_material", {S: dict(CSG, operands=[BALL, dict(BALL, material="gold")])},
+      S + "/operands/1/material", "no material named \"gold\"")
+scene("csg_operand_unknown_shape", {S: dict(CSG, operands=[BALL, {"type": "instance", "shape": "x"}])}, "no shape named \"x\"")
+scene("csg_intersection_empty", {S: dict(CSG, op="intersection", operands=[BALL, dict(BALL, center=[5, 0, 0])])}, S,
+      "the intersection is empty")
+scene("csg_thin_negative", {S: dict(CSG, thin=-1)}, S + "/thin", "CSG thin must be in 0..1e8, not -1")
+scene("csg_thin_text", {S: dict(CSG, thin="small")}, S + "/thin", "must be a number")
+scene("box_flat", {S: {"type": "box", "min": [0, 0, 0], "max": [1, 0, 1]}}, "box: min must be below max")
+scene("box_far", {S: {"type": "box", "min": [0, 0, 0], "max": [1, 1e9, 1]}}, S + "/max/1", "coordinate must be in")
 L = "/lights/0"
 scene("light_colour_huge", {L + "/color": [1e39, 1, 1]}, L + "/color/0", "radiance must be in 0..1000000")
 scene("light_colour_negative", {L + "/color": [1, -1, 1]}, "radiance")

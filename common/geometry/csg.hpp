@@ -47,7 +47,7 @@ void drop_thin(SpanList& spans, Real thin, const Vec3& direction);
 struct CsgOperand {
     std::shared_ptr<const Shape> shape;
     MaterialId material = kNone;
-    std::string name;
+    std::string name = {};
 };
 
 // A hit on a CSG object: the record of the operand's surface it came from.
