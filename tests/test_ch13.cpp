@@ -356,13 +356,13 @@ TEST_CASE("operands: their material and normal, flipped when subtracted; --pick 
     CHECK(rec.normal.y > Real(0.999));  // the sphere's outward normal there is -y; flipped
     CHECK(rec.material == 7);
     CHECK(rec.surface == 2);
-    CHECK(die.describe(rec.part) == "pip (sphere), right of difference");
+    CHECK(die.describe(rec.part) == "pip (sphere), subtracted");
     // Beside the pip: the block's top face, the block's material.
     REQUIRE(hit_record(Shape(die), Ray{Vec3(0.6, 3, 0), Vec3(0, -1, 0)}, Interval{}, SurfaceRef{2, 9}, rec));
     CHECK(rec.t == 2);
     CHECK(rec.normal == Vec3(0, 1, 0));
     CHECK(rec.material == 4);
-    CHECK(die.describe(rec.part) == "body (box), left of difference");
+    CHECK(die.describe(rec.part) == "body (box)");
     // An operand without a material takes the surface's.
     const Csg plain(CsgOp::union_of, CsgOperand{block}, CsgOperand{pip});
     REQUIRE(hit_record(Shape(plain), Ray{Vec3(0.6, 3, 0), Vec3(0, -1, 0)}, Interval{}, SurfaceRef{2, 9}, rec));
@@ -371,8 +371,8 @@ TEST_CASE("operands: their material and normal, flipped when subtracted; --pick 
     const auto inner = share(Instance(share(die), Affine::translate(Vec3(0, 0, 0))));
     const Csg outer(CsgOp::union_of, CsgOperand{share(Sphere(Vec3(5, 0, 0), 1)), kNone, "moon"}, CsgOperand{inner});
     CHECK(outer.leaves() == 3);
-    CHECK(outer.describe(0) == "moon (sphere), left of union");
-    CHECK(outer.describe(2) == "pip (sphere), right of difference");
+    CHECK(outer.describe(0) == "moon (sphere)");
+    CHECK(outer.describe(2) == "pip (sphere), subtracted");
     REQUIRE(hit_record(Shape(outer), Ray{Vec3(0, 3, 0), Vec3(0, -1, 0)}, Interval{}, SurfaceRef{}, rec));
     CHECK(rec.part == 2);
 }
@@ -480,4 +480,27 @@ TEST_CASE("the chapter's scenes: the same image with every structure as with bru
         const Scene scene = load_scene_file(kScenes + std::string(name) + ".json");
         CHECK(rt::test::image_differences(scene, rt::kAccelKinds) == 0);
     }
+}
+
+TEST_CASE("a long operand list nests as a balanced tree: 1024 balls, the first minus the rest") {
+    std::string text = R"({"camera": {"eye": [0, 0, 50], "target": [0, 0, 0]}, "surfaces": [
+ {"type": "csg", "op": "difference", "operands": [{"type": "box", "min": [-40, -1, -1], "max": [40, 1, 1]})";
+    for (int k = 1; k < 1024; ++k)
+        text += R"(, {"type": "sphere", "center": [)" + std::to_string(-40 + 0.078 * k) + R"(, 0, 1], "radius": 0.03})";
+    text += "]}]}";
+    const Scene scene = load_scene_text(text, "balls.json", ".");
+    const auto* csg = std::get_if<Csg>(&scene.surfaces[0].shape);
+    REQUIRE(csg != nullptr);
+    CHECK(csg->leaves() == 1024);
+    // Straight down onto ball 500's centre: the bottom of its pit, 0.03 below the box's top.
+    HitRecord rec;
+    const Ray down{Vec3(-40 + 0.078 * 500, 0, 5), Vec3(0, 0, -1)};
+    REQUIRE(hit_record(scene.surfaces[0].shape, down, Interval{}, SurfaceRef{}, rec));
+    CHECK(std::abs(rec.t - Real(4.03)) < 1e3 * kEps);
+    CHECK(csg->describe(rec.part) == "sphere, subtracted");
+    // Between two pits, the box's top face.
+    REQUIRE(hit_record(scene.surfaces[0].shape, Ray{down.origin + Vec3(0.039, 0, 0), down.direction}, Interval{},
+                       SurfaceRef{}, rec));
+    CHECK(rec.t == 4);
+    CHECK(csg->describe(rec.part) == "box");
 }

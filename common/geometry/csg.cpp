@@ -191,13 +191,15 @@ Csg::Csg(CsgOp op, CsgOperand left, CsgOperand right, Real thin)
     right_leaves_ = leaf_count(*right_.shape);
 }
 
-std::string Csg::describe(std::uint32_t part) const {
+std::string Csg::describe(std::uint32_t part, bool subtracted) const {
     const bool on_left = part < left_leaves_;
     const CsgOperand& o = on_left ? left_ : right_;
     if (!on_left) part -= left_leaves_;
-    if (const Csg* inner = csg_in(*o.shape)) return inner->describe(part);
-    const std::string what = o.name.empty() ? shape_kind(*o.shape) : o.name + " (" + shape_kind(*o.shape) + ")";
-    return what + ", " + (on_left ? "left" : "right") + " of " + csg_op_name(op_);
+    // The right side of a difference is subtracted; subtracted twice, it is added back.
+    const bool flipped = subtracted != (!on_left && op_ == CsgOp::difference);
+    if (const Csg* inner = csg_in(*o.shape)) return inner->describe(part, flipped);
+    const std::string kind = shape_kind(*o.shape);
+    return (o.name.empty() ? kind : o.name + " (" + kind + ")") + (flipped ? ", subtracted" : "");
 }
 
 std::string describe_part(const Shape& shape, std::uint32_t part) {

@@ -72,10 +72,13 @@ public:
     // The operands in the whole tree that are not CSG objects themselves; HitRecord::part
     // numbers them left to right.
     std::uint32_t leaves() const { return left_leaves_ + right_leaves_; }
-    // Which operand `part` is, for --pick: its name (or kind), and its place in the tree.
-    std::string describe(std::uint32_t part) const;
+    // Which operand `part` is, for --pick: its name and kind, and "subtracted" if its surface
+    // bounds the result from the other side (its normals flipped).
+    std::string describe(std::uint32_t part) const { return describe(part, false); }
 
 private:
+    std::string describe(std::uint32_t part, bool subtracted) const;
+
     CsgOp op_;
     CsgOperand left_, right_;
     Real thin_;

@@ -147,8 +147,19 @@ CsgOperand read_operand(const Loader& loader, const Fields& f) {
     return operand;
 }
 
+// Operands [first, last) joined by `op` as a balanced tree: a long list nests log2(n) deep,
+// not n deep, and the spans are computed recursively.
+CsgOperand join(CsgOp op, std::vector<CsgOperand>& operands, std::size_t first, std::size_t last, Real thin) {
+    if (last - first == 1) return std::move(operands[first]);
+    const std::size_t mid = first + (last - first) / 2;
+    CsgOperand left = join(op, operands, first, mid, thin);
+    CsgOperand right = join(op, operands, mid, last, thin);
+    return CsgOperand{std::make_shared<const Shape>(Csg(op, std::move(left), std::move(right), thin))};
+}
+
 // {"type": "csg", "op": "union" | "intersection" | "difference", "operands": [A, B, C, ...],
-// "thin": length}: (A op B) op C ..., so a difference takes every later operand from the first.
+// "thin": length}: A op B op C ...; a difference takes every later operand from the first,
+// A - (B u C u ...).
 Shape read_csg(const Loader& loader, const Fields& f) {
     const std::string name = f.text("op");
     CsgOp op{};
@@ -160,15 +171,12 @@ Shape read_csg(const Loader& loader, const Fields& f) {
     if (!limits::contains(limits::csg_operands, double(list.size())))
         f.fail("operands", limits::refuse(limits::csg_operands, double(list.size())));
     const Real thin = f.has("thin") ? f.number("thin", limits::csg_thin) : Real(-1);
+    std::vector<CsgOperand> operands;
+    for (const Fields& o : list) operands.push_back(read_operand(loader, o));
     try {
-        CsgOperand result = read_operand(loader, list[0]);
-        for (std::size_t i = 1; i < list.size(); ++i) {
-            // Every level but the top takes the default thickness of its own size.
-            const Real level_thin = i + 1 == list.size() ? thin : Real(-1);
-            result = CsgOperand{
-                std::make_shared<const Shape>(Csg(op, std::move(result), read_operand(loader, list[i]), level_thin))};
-        }
-        return *result.shape;
+        if (op != CsgOp::difference) return *join(op, operands, 0, operands.size(), thin).shape;
+        CsgOperand cut = join(CsgOp::union_of, operands, 1, operands.size(), thin);
+        return Csg(op, std::move(operands[0]), std::move(cut), thin);
     } catch (const std::invalid_argument& e) {  // an empty intersection
         f.fail("", e.what());
     }
