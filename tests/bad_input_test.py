@@ -206,6 +206,15 @@ scene("csg_thin_negative", {S: dict(CSG, thin=-1)}, S + "/thin", "CSG thin must 
 scene("csg_thin_text", {S: dict(CSG, thin="small")}, S + "/thin", "must be a number")
 scene("box_flat", {S: {"type": "box", "min": [0, 0, 0], "max": [1, 0, 1]}}, "box: min must be below max")
 scene("box_far", {S: {"type": "box", "min": [0, 0, 0], "max": [1, 1e9, 1]}}, S + "/max/1", "coordinate must be in")
+# Chapter 14: antialiasing.
+scene("aa_pattern_unknown", {"/antialiasing": {"pattern": "halton"}}, "/antialiasing/pattern", "unknown pattern \"halton\"")
+scene("aa_filter_unknown", {"/antialiasing": {"filter": "gauss"}}, "/antialiasing/filter", "unknown filter \"gauss\"")
+scene("aa_samples_zero", {"/antialiasing": {"samples": 0}}, "/antialiasing/samples", "samples per pixel must be in 1..65536")
+scene("aa_samples_huge", {"/antialiasing": {"samples": 1e9}}, "/antialiasing/samples", "must be a whole number")
+scene("aa_samples_not_square", {"/antialiasing": {"pattern": "jittered", "samples": 12}}, "/antialiasing/samples",
+      "the jittered pattern takes n x n samples")
+scene("aa_unknown_key", {"/antialiasing": {"sampler": "random"}}, "unknown key 'sampler'")
+scene("aa_not_object", {"/antialiasing": "jittered"}, "/antialiasing", "must be an object")
 L = "/lights/0"
 scene("light_colour_huge", {L + "/color": [1e39, 1, 1]}, L + "/color/0", "radiance must be in 0..1000000")
 scene("light_colour_negative", {L + "/color": [1, -1, 1]}, "radiance")

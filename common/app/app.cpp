@@ -128,6 +128,8 @@ json stats_json(const std::string& chapter, const SceneEntry& entry, const Scene
            {"width", o.width},
            {"height", o.height},
            {"spp", o.spp},
+           {"pattern", pattern_name(o.antialiasing.pattern)},
+           {"filter", filter_name(o.antialiasing.filter)},
            {"threads", r.threads},
            {"real", real_name()},
            {"track", RTLAB_TRACK_NAME},
@@ -216,6 +218,11 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
                 return accel_kind(value) ? std::string() : "unknown '" + value + "' (expected " + accel_names() + ")";
             },
             ""));
+    cli.add_option("--pattern", inv.pattern,
+                   "where pixel samples go: random, regular or jittered (default: the scene's)")
+        ->check(CLI::IsMember({"random", "regular", "jittered"}));
+    cli.add_option("--filter", inv.filter, "how samples are weighed: box or tent (default: the scene's)")
+        ->check(CLI::IsMember({"box", "tent"}));
     cli.add_flag("--stats", inv.stats, "print render statistics as one JSON line");
     cli.set_version_flag("--version",
                          std::string(id_ + " (rtlab " + kVersion + ", Real=" + real_name() + ", " + RTLAB_TRACK_NAME +
@@ -249,6 +256,8 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
     } else {
         return usage("--scene: unknown scene '" + scene_name + "' (see --list-scenes, or give a FILE.json)");
     }
+    inv.spp_given = cli.count("--spp") > 0;
+    if (!inv.pattern.empty()) o.antialiasing.pattern = *pixel_pattern(inv.pattern);
     if (cli.count("--output") && inv.output.empty()) return usage("--output: must not be empty");
     if (cli.count("--svg")) {
         if (inv.pick.empty()) return usage("--svg: draws a picked pixel's ray tree, so it needs --pick X,Y");
@@ -289,6 +298,10 @@ int ChapterApp::execute(const Invocation& inv) const {
         }
         RenderOptions o = inv.options;
         o.progress = ::isatty(STDERR_FILENO) != 0;
+        o.antialiasing = scene.antialiasing;
+        if (!inv.pattern.empty()) o.antialiasing.pattern = *pixel_pattern(inv.pattern);
+        if (!inv.filter.empty()) o.antialiasing.filter = *pixel_filter(inv.filter);
+        if (!inv.spp_given && scene.samples > 0) o.spp = scene.samples;
         const RenderResult r = render(scene, o);
         // Everything that can fail happens before the image is written, so a failed run
         // leaves no file.

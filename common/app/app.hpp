@@ -52,6 +52,8 @@ public:
         std::string svg;               // with pick: draw the ray tree into this file
         std::optional<int> max_depth;  // --depth: overrides the scene's
         std::string accel;             // --accel: overrides the scene's (empty: the scene's)
+        std::string pattern, filter;   // --pattern, --filter: override the scene's antialiasing
+        bool spp_given = false;        // --spp overrides the scene's samples
         bool stats = false;
     };
     // Parses and checks a command line without touching any file: the exit code to end with

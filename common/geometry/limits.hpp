@@ -54,7 +54,8 @@ inline constexpr Range mesh_triangles{"mesh triangles", 1, 1 << 25, "", ""};
 inline constexpr Range image_file_bytes{"image file size", 0, 1 << 29, "bytes", ""};
 inline constexpr Range image_side{"image width and height", 1, 16384, "pixels", ""};
 inline constexpr Range image_pixels{"image size", 1, 1 << 25, "pixels", ""};
-inline constexpr Range samples_per_pixel{"samples per pixel", 1, 65536, "", ""};
+inline constexpr Range samples_per_pixel{"samples per pixel", 1, 65536, "",
+                                         "/properties/antialiasing/properties/samples"};
 inline constexpr Range image_samples{"samples per image", 1, 4294967296.0, "width x height x spp", ""};
 inline constexpr Range threads{"threads", 0, 1024, "", ""};
 // @book-end

@@ -222,7 +222,7 @@ Scene load_scene_text(const std::string& text, const std::string& filename, cons
     const JsonReader reader(text, filename, base_dir);
     const Fields top(reader, doc, "");
     top.only({"$schema", "description", "camera", "shading", "background", "ambient", "max_depth", "offset", "accel",
-              "materials", "lights", "shapes", "surfaces"});
+              "antialiasing", "materials", "lights", "shapes", "surfaces"});
     SceneSummary summary;
     summary.from_file = true;
     Scene scene;
@@ -249,6 +249,23 @@ Scene load_scene_text(const std::string& text, const std::string& filename, cons
             if (method == kOffsetMethodNames[k]) scene.offset.method = OffsetMethod(k), known = true;
         if (!known) o.fail("method", "unknown offset method \"" + method + "\" (expected robust, course or normal)");
         scene.offset.epsilon = o.length("epsilon", scene.offset.epsilon);
+    }
+    if (top.has("antialiasing")) {
+        const Fields a(reader, doc["antialiasing"], "/antialiasing");
+        a.only({"pattern", "filter", "samples"});
+        const std::string pattern = a.text("pattern", pattern_name(scene.antialiasing.pattern));
+        if (const auto p = pixel_pattern(pattern))
+            scene.antialiasing.pattern = *p;
+        else
+            a.fail("pattern", "unknown pattern \"" + pattern + "\" (expected random, regular or jittered)");
+        const std::string filter = a.text("filter", filter_name(scene.antialiasing.filter));
+        if (const auto f = pixel_filter(filter))
+            scene.antialiasing.filter = *f;
+        else
+            a.fail("filter", "unknown filter \"" + filter + "\" (expected box or tent)");
+        scene.samples = a.integer("samples", limits::samples_per_pixel, 0);
+        if (scene.samples && scene.antialiasing.pattern != PixelPattern::random && !pattern_side(scene.samples))
+            a.fail("samples", "the " + pattern + " pattern takes n x n samples (1, 4, 9, 16, ...)");
     }
     scene.background = top.color("background", limits::radiance, scene.background);
     scene.ambient = top.color("ambient", limits::radiance, scene.ambient);

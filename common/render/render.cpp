@@ -78,11 +78,29 @@ void check_budget(const RenderOptions& o) {
     const double pixels = double(o.width) * double(o.height);
     in(limits::image_pixels, pixels, "--width x --height");
     in(limits::image_samples, pixels * double(o.spp), "--width x --height x --spp");
+    if (o.antialiasing.pattern != PixelPattern::random && !pattern_side(o.spp))
+        throw std::invalid_argument("--spp " + std::to_string(o.spp) + ": the " + pattern_name(o.antialiasing.pattern) +
+                                    " pattern takes n x n samples (1, 4, 9, 16, ...)");
 }
 
-CameraSample camera_sample(int i, int j, int spp, Sampler& sampler) {
-    if (spp == 1) return {Vec2(Real(i) + Real(0.5), Real(j) + Real(0.5))};
-    return {Vec2(Real(i), Real(j)) + sampler.get2(Dimension::pixel)};
+CameraSample camera_sample(int i, int j, int k, int spp, const Antialiasing& aa, Sampler& sampler) {
+    const Vec2 corner{Real(i), Real(j)};
+    if (spp == 1 && aa.pattern == PixelPattern::random && aa.filter == PixelFilter::box)
+        return {corner + Vec2(Real(0.5))};
+    Vec2 u;
+    switch (aa.pattern) {
+        case PixelPattern::random:
+            u = sampler.get2(Dimension::pixel);
+            break;
+        case PixelPattern::regular:
+            u = stratified_point(k, *pattern_side(spp), Vec2(Real(0.5)));
+            break;
+        case PixelPattern::jittered:
+            u = stratified_point(k, *pattern_side(spp), sampler.get2(Dimension::pixel));
+            break;
+    }
+    if (aa.filter == PixelFilter::box) return {corner + u};
+    return {corner + Vec2(Real(0.5)) + Vec2(tent_offset(u.x), tent_offset(u.y))};
 }
 
 RenderResult render(const Scene& scene, const RenderOptions& o) {
@@ -110,7 +128,7 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
                 Color sum(0);
                 for (int k = 0; k < o.spp; ++k) {
                     sampler.start_sample(k);
-                    const Ray ray = view.ray(camera_sample(i, j, o.spp, sampler));
+                    const Ray ray = view.ray(camera_sample(i, j, k, o.spp, o.antialiasing, sampler));
                     counters.count(RayKind::camera);
                     TraceContext context{sampler, counters};
                     const Color L = integrator.Li(scene, ray, context);

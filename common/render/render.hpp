@@ -1,4 +1,5 @@
 #pragma once
+#include "render/antialiasing.hpp"
 #include "render/image.hpp"
 #include "render/scene.hpp"
 
@@ -10,10 +11,11 @@ namespace rt {
 struct RenderOptions {
     int width = 400;
     int height = 300;
-    int spp = 1;             // samples per pixel; 1 = the pixel centre, as in course §9.2
-    std::uint64_t seed = 0;  // selects every pixel's random stream
-    int threads = 0;         // 0 = all cores
-    bool progress = false;   // progress bar on stderr
+    int spp = 1;                // samples per pixel; 1 = the pixel centre, as in course §9.2
+    Antialiasing antialiasing;  // where the samples go, and the filter (book §14)
+    std::uint64_t seed = 0;     // selects every pixel's random stream
+    int threads = 0;            // 0 = all cores
+    bool progress = false;      // progress bar on stderr
 };
 
 struct RenderResult {
@@ -24,18 +26,20 @@ struct RenderResult {
 };
 
 // Throws std::invalid_argument unless the image size, samples and threads are within
-// limits.hpp: a render that would take unbounded memory or time is refused before it starts.
+// limits.hpp (a render that would take unbounded memory or time is refused before it
+// starts), and the pattern can place that many samples.
 void check_budget(const RenderOptions& options);
 
 // The one render loop: square tiles spread over the cores by TBB, each pixel with its own
 // sampler. Exceptions from the integrator (an unfinished exercise) reach the caller.
 RenderResult render(const Scene& scene, const RenderOptions& options);
 
-// The camera sample of pixel (i, j) (j up from the bottom). One sample per pixel lands on
-// the pixel centre, as in course §9.2; more are spread uniformly at random over the pixel,
-// from the sampler's pixel dimension. Lens and time stay at the pinhole and time 0 until a
-// camera asks for them.
-CameraSample camera_sample(int i, int j, int spp, Sampler& sampler);
+// Sample k of pixel (i, j) (j up from the bottom), from the sampler's pixel dimension. One
+// random sample per pixel with the box filter lands on the pixel centre, as in course §9.2;
+// otherwise the pattern places the sample in the unit square (regular and jittered need a
+// square spp: check_budget), and the filter turns that into a place on the film. Lens and
+// time stay at the pinhole and time 0 until a camera asks for them.
+CameraSample camera_sample(int i, int j, int k, int spp, const Antialiasing& aa, Sampler& sampler);
 
 // What the ray through the centre of image pixel (x, y) (y down from the top, as image
 // viewers count) sees: the picking use of ray tracing from the course's FAQ. The

@@ -1,4 +1,5 @@
 #pragma once
+#include "render/antialiasing.hpp"
 // Everything a render needs: what is seen (surfaces, materials, lights), from where
 // (camera) and how it is shaded (integrator).
 #include "accel/accel.hpp"
@@ -37,6 +38,11 @@ struct Scene {
     // glass hit splits a ray in two whose weights add up to at most its own, so this bounds
     // a camera ray's tree to about 2 / min_reach rays, whatever max_depth allows (book §8.4).
     float min_reach = 1.0f / 1024;
+    // Antialiasing (book §14): the pattern and filter of the pixel samples, and how many a
+    // pixel takes (0: as the command line says, 1 by default). --pattern, --filter and --spp
+    // override them.
+    Antialiasing antialiasing;
+    int samples = 0;
 
     MaterialId add_material(const Material& m) {
         materials.push_back(m);

@@ -1,0 +1,30 @@
+// STUDENT COPY of solutions/ch14_antialiasing.cpp, made by tools/gen_exercises.cpp.
+// Write your code between each "@exercise" line and its "@end", in place of the throw.
+// Only those lines are yours: ./lab exercises keeps them and rewrites the rest.
+// Chapter 14 exercises: antialiasing (book §14, course §9.11.1). Declared in
+// common/render/antialiasing.hpp.
+#include "core/exercise.hpp"
+#include "render/antialiasing.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace rt {
+
+// @book stratified
+Vec2 stratified_point(int k, int n, Vec2 u) {
+    // @exercise 14.1 | stratified_point | book §14.2
+    throw NotImplemented("exercise 14.1 (stratified_point) is not done yet: see book §14.2");
+    // @end
+}
+// @book-end
+
+// @book tent
+Real tent_offset(Real u) {
+    // @exercise 14.2 | tent_offset | book §14.3
+    throw NotImplemented("exercise 14.2 (tent_offset) is not done yet: see book §14.3");
+    // @end
+}
+// @book-end
+
+}  // namespace rt
