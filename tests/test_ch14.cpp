@@ -135,15 +135,21 @@ double edge_error(const Image& img) {
     return sum / count;
 }
 
+// The edge scene's 8 x 8 image, one thread, `spp` samples with the box filter.
+RenderOptions edge_options(int spp, PixelPattern pattern) {
+    RenderOptions o;
+    o.width = o.height = 8;
+    o.threads = 1;
+    o.spp = spp;
+    o.antialiasing = {pattern, PixelFilter::box};
+    return o;
+}
+
 }  // namespace
 
 TEST_CASE("a pixel cut by an edge: its value is the area covered (box filter), to the sampling error") {
     const Scene scene = edge_scene();
-    RenderOptions o;
-    o.width = o.height = 8;
-    o.threads = 1;
-    o.spp = 1024;
-    o.antialiasing = {PixelPattern::jittered, PixelFilter::box};
+    RenderOptions o = edge_options(1024, PixelPattern::jittered);
     const Image img = render(scene, o).image;
     for (int y = 0; y < 8; ++y)
         for (int x = 0; x < 8; ++x) {
@@ -159,10 +165,7 @@ TEST_CASE("a pixel cut by an edge: its value is the area covered (box filter), t
 
 TEST_CASE("at 16 samples, jittering errs less than random sampling on the edge pixels") {
     const Scene scene = edge_scene();
-    RenderOptions o;
-    o.width = o.height = 8;
-    o.threads = 1;
-    o.spp = 16;
+    RenderOptions o = edge_options(16, PixelPattern::random);
     double random_error = 0, jittered_error = 0;
     for (std::uint64_t seed = 1; seed <= 16; ++seed) {
         o.seed = seed;

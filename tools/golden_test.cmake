@@ -4,16 +4,8 @@
 # the heatmap stays next to the output as OUTPUT-heatmap.png.
 string(REGEX REPLACE "\\.png$" "" stem "${OUTPUT}")
 file(REMOVE "${OUTPUT}" "${stem}-heatmap.png" "${stem}.txt")
-execute_process(COMMAND ${CHAPTER} --scene ${SCENE} ${RENDER_ARGS} -o ${OUTPUT} --stats
-    RESULT_VARIABLE code OUTPUT_VARIABLE stats ERROR_VARIABLE err)
-if(NOT code EQUAL 0)
-    file(WRITE "${stem}.txt" "render failed: ${err}")
-    message(FATAL_ERROR "render of ${SCENE} failed (exit ${code}): ${err}")
-endif()
-string(JSON nonfinite GET "${stats}" nonfinite_samples)
-if(NOT nonfinite EQUAL 0)
-    message(FATAL_ERROR "render of ${SCENE}: ${nonfinite} samples were NaN or infinite")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/render_checked.cmake)
+render_checked(${OUTPUT} "${stem}.txt" ${RENDER_ARGS})
 execute_process(COMMAND ${DIFF} ${REFERENCE} ${OUTPUT} ${TOLERANCE} --heatmap ${stem}-heatmap.png
     RESULT_VARIABLE code OUTPUT_VARIABLE report ERROR_VARIABLE err)
 file(WRITE "${stem}.txt" "${report}${err}")

@@ -4,6 +4,7 @@
 # EXPECT pass: the test must pass. EXPECT fail: it must fail (a planted sampler bug).
 # With GROUPS = G > 1, the seeds are G groups of SEEDS' length (each its own seeds) and the
 # test passes when at most MAX_FALSE_ALARMS of them fail: the false-alarm rate, measured.
+include(${CMAKE_CURRENT_LIST_DIR}/render_checked.cmake)
 if(NOT GROUPS)
     set(GROUPS 1)
 endif()
@@ -19,17 +20,7 @@ foreach(group RANGE ${last_group})
     foreach(k RANGE ${last})
         math(EXPR seed "${first_seed} + ${group} * ${per_group} + ${k}")
         set(image ${OUTDIR}/${SCENE}-${seed}.pfm)
-        execute_process(COMMAND ${CHAPTER} --scene ${SCENE} ${RENDER_ARGS} ${EXTRA_ARGS} --seed ${seed} -o ${image}
-                                --stats
-            RESULT_VARIABLE code OUTPUT_VARIABLE stats ERROR_VARIABLE err)
-        if(NOT code EQUAL 0)
-            file(WRITE ${OUTDIR}/${SCENE}.txt "render failed: ${err}")
-            message(FATAL_ERROR "render of ${SCENE} (seed ${seed}) failed (exit ${code}): ${err}")
-        endif()
-        string(JSON nonfinite GET "${stats}" nonfinite_samples)
-        if(NOT nonfinite EQUAL 0)
-            message(FATAL_ERROR "render of ${SCENE}: ${nonfinite} samples were NaN or infinite")
-        endif()
+        render_checked(${image} ${OUTDIR}/${SCENE}.txt ${RENDER_ARGS} ${EXTRA_ARGS} --seed ${seed})
         list(APPEND images ${image})
     endforeach()
     execute_process(COMMAND ${STAT} test ${MEAN} ${VAR} ${images} ${TOLERANCE} --map ${OUTDIR}/${SCENE}-map.png

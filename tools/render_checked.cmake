@@ -1,0 +1,15 @@
+# render_checked(OUTPUT REPORT ARGS...): runs CHAPTER --scene SCENE ARGS... -o OUTPUT --stats
+# and fails the calling test unless it exits 0 with no NaN or infinite sample; on a failed
+# render, REPORT (the text the grader shows) says why.
+function(render_checked output report)
+    execute_process(COMMAND ${CHAPTER} --scene ${SCENE} ${ARGN} -o ${output} --stats
+        RESULT_VARIABLE code OUTPUT_VARIABLE stats ERROR_VARIABLE err)
+    if(NOT code EQUAL 0)
+        file(WRITE "${report}" "render failed: ${err}")
+        message(FATAL_ERROR "render of ${SCENE} (${ARGN}) failed (exit ${code}): ${err}")
+    endif()
+    string(JSON nonfinite GET "${stats}" nonfinite_samples)
+    if(NOT nonfinite EQUAL 0)
+        message(FATAL_ERROR "render of ${SCENE}: ${nonfinite} samples were NaN or infinite")
+    endif()
+endfunction()
