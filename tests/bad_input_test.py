@@ -200,6 +200,8 @@ scene("csg_operand_unknown_key", {S: dict(CSG, operands=[BALL, dict(BALL, colour
 scene("csg_operand_unknown_material", {S: dict(CSG, operands=[BALL, dict(BALL, material="gold")])},
       S + "/operands/1/material", "no material named \"gold\"")
 scene("csg_operand_unknown_shape", {S: dict(CSG, operands=[BALL, {"type": "instance", "shape": "x"}])}, "no shape named \"x\"")
+scene("csg_in_shapes_names_shape", {"/shapes": {"a": BALL, "b": dict(CSG, operands=[BALL, {"type": "instance", "shape": "a"}])}},
+      "/shapes/b/operands/1/type", "cannot name another shape")
 scene("csg_intersection_empty", {S: dict(CSG, op="intersection", operands=[BALL, dict(BALL, center=[5, 0, 0])])}, S,
       "the intersection is empty")
 scene("csg_thin_negative", {S: dict(CSG, thin=-1)}, S + "/thin", "CSG thin must be in 0..1e8, not -1")

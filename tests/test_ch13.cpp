@@ -109,22 +109,6 @@ TEST_CASE("13.1 combine: empty lists, touching, nested and identical spans") {
     CHECK(ts(combine(CsgOp::difference, q, p)) == Pairs{{3, 5}, {8, 9}});
 }
 
-TEST_CASE("drop_thin drops slivers of solid and closes slivers of air, in world lengths") {
-    SpanList s = list({{0, 1}, {1 + Real(1e-9), 2}, {3, 3 + Real(1e-9)}, {4, 5}}, 0);
-    SpanList kept = s;
-    drop_thin(kept, Real(1e-6), Vec3(0, 2, 0));  // |d| = 2: thicknesses count double
-    CHECK(ts(kept) == Pairs{{0, 2}, {4, 5}});
-    kept = s;
-    drop_thin(kept, 0, Vec3(0, 2, 0));  // thin 0: everything stays
-    CHECK(kept.size() == 4);
-    // A span 0.4 long along d = (0, 0, 3) is 1.2 long in the world: kept at thin 1, not at 1.5.
-    SpanList w = list({{0, Real(0.4)}}, 0);
-    drop_thin(w, 1, Vec3(0, 0, 3));
-    CHECK(w.size() == 1);
-    drop_thin(w, Real(1.5), Vec3(0, 0, 3));
-    CHECK(w.empty());
-}
-
 TEST_CASE("13.2 mesh_spans: crossings grouped at one t, silhouettes, strays") {
     const Vec3 d(0, 0, -1);
     auto cross = [](Real t, Real nz) {
@@ -454,38 +438,6 @@ TEST_CASE("the thin tolerance: coplanar faces met through two transforms leave s
         CAPTURE(offset);
         CHECK(slivers_with == 0);
         CHECK(slivers_without > 0);  // the test can fail: thin 0 keeps them
-    }
-}
-
-TEST_CASE("operands that are not closed solids are refused, naming them") {
-    const auto poly = share(Polygon({Vec3(0), Vec3(1, 0, 0), Vec3(0, 1, 0)}));
-    const auto ball = share(Sphere(Vec3(0), 1));
-    CHECK_THROWS_WITH_AS(Csg(CsgOp::union_of, {ball}, {poly, kNone, "sheet"}),
-                         doctest::Contains("\"sheet\" is not a closed solid: a polygon has no inside"),
-                         std::invalid_argument);
-    CHECK_THROWS_AS(Csg(CsgOp::union_of, {share(Triangle(Vec3(0), Vec3(1, 0, 0), Vec3(0, 1, 0)))}, {ball}),
-                    std::invalid_argument);
-    CHECK_THROWS_WITH_AS(Csg(CsgOp::difference, {ball}, {share(Mesh(terrain(Vec3(0), 2, Real(0.2), 4)))}),
-                         doctest::Contains("not closed"), std::invalid_argument);
-    CHECK_THROWS_AS(Csg(CsgOp::difference, {ball}, {share(Instance(poly, Affine::translate(Vec3(1, 0, 0))))}),
-                    std::invalid_argument);
-    // A closed mesh with one triangle removed is open.
-    MeshData cube = subdivided_cube(Vec3(0), 1, 1);
-    cube.triangles.pop_back();
-    CHECK_THROWS_AS(Csg(CsgOp::union_of, {ball}, {share(Mesh(cube))}), std::invalid_argument);
-
-    const std::string text = R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0]},
- "surfaces": [{"type": "csg", "op": "difference", "operands": [
-   {"type": "sphere", "center": [0, 0, 0], "radius": 1},
-   {"type": "polygon", "name": "lid", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}]}]})";
-    try {
-        load_scene_text(text, "lid.json", ".");
-        FAIL("expected a SceneError");
-    } catch (const SceneError& e) {
-        const std::string what = e.what();
-        CHECK(what.find("lid.json:4:4: /surfaces/0/operands/1: a CSG operand must be a closed solid: a polygon has "
-                        "no inside") == 0);
-        CHECK(what.find('\n') == std::string::npos);
     }
 }
 

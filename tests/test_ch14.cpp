@@ -1,12 +1,11 @@
 // Chapter 14: antialiasing (course §9.11.1). The stratified pattern and the tent warp on
 // worked values; the tent's distribution against its formula; where camera_sample puts a
 // pixel's samples for each pattern and filter; a pixel cut by an edge against the area it
-// covers, computed by integration; jittering beating random sampling at equal samples; and
-// the statistical test of tools/ztest.hpp on numbers whose answer is known.
+// covers, computed by integration; and jittering beating random sampling at equal samples.
+// (The statistical test of tools/ztest.hpp, library code, is tested in test_library_parts.cpp.)
 #include "io/scene_file.hpp"
 #include "render/render.hpp"
 #include "support.hpp"
-#include "ztest.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -178,32 +177,4 @@ TEST_CASE("at 16 samples, jittering errs less than random sampling on the edge p
     CAPTURE(jittered_error / 16);
     // Random: about sqrt(c (1 - c) / 16), ~0.09; jittered: only the ~4 strata on the edge vary.
     CHECK(jittered_error < 0.6 * random_error);
-}
-
-TEST_CASE("the statistical test: Sidak's level, the z-test's p, and a verdict on known numbers") {
-    // Sidak: 1 - (1 - alpha)^(1/N); for small alpha close to alpha / N.
-    CHECK(stat::sidak(0.01, 1) == doctest::Approx(0.01));
-    CHECK(stat::sidak(0.01, 10000) == doctest::Approx(1.005e-6).epsilon(1e-3));
-    // The normal distribution's two-sided tails: P(|Z| > 1.959964) = 0.05, P(|Z| > 3.290527) = 0.001.
-    // An average of 4 renders of variance 4 has standard deviation 1.
-    CHECK(stat::z_p(1.959964, 4, 0, 4, 0) == doctest::Approx(0.05).epsilon(1e-5));
-    CHECK(stat::z_p(-3.290527, 4, 0, 4, 0) == doctest::Approx(0.001).epsilon(1e-5));
-    CHECK(stat::z_p(5, 8, 5, 0, 0) == 1);
-    // One list's variance about the mean of 4.
-    const stat::MeanVar mv = stat::mean_var({{1, 5}, {2, 5}, {3, 5}, {4, 5}});
-    CHECK(mv.mean[0] == doctest::Approx(2.5));
-    CHECK(mv.var[0] == doctest::Approx((1.5 * 1.5 * 2 + 0.5 * 0.5 * 2) / 3));
-    CHECK(mv.var[1] == 0);
-    // 1000 values, all agreeing but one far off: it fails, and 0.1 % of 1000 may.
-    const stat::MeanVar ref{std::vector<double>(1000, 0.5), std::vector<double>(1000, 1e-3)};
-    std::vector<std::vector<double>> renders(8, std::vector<double>(1000, 0.5));
-    for (auto& r : renders) r[17] = 0.8;
-    stat::Verdict v = stat::compare(renders, ref, 0.01, 0.001, 0);
-    CHECK(v.failed == 1);
-    CHECK(v.allowed == 1);
-    CHECK(v.pass());
-    for (auto& r : renders) r[18] = 0.2;
-    v = stat::compare(renders, ref, 0.01, 0.001, 0);
-    CHECK(v.failed == 2);
-    CHECK_FALSE(v.pass());
 }

@@ -37,9 +37,10 @@ SpanList combine(CsgOp op, const SpanList& a, const SpanList& b);
 // are one crossing: a ray through an edge or a vertex meets every triangle there.
 SpanList mesh_spans(const std::vector<HitRecord>& crossings, const Vec3& direction, Real same_t);
 
-// Drops the spans, and then closes the gaps between spans, that are thinner than `thin`
-// (a length in the world: t times |direction|). Two solids that share a face meet there with
-// rounding error, which would otherwise leave slivers of one inside or outside the other.
+// Drops the spans, and then closes the gaps between spans, that are thinner than `thin`: a
+// length in the space of the ray given (t times |direction|), which for a CSG object under a
+// transform is the object's own space. Two solids that share a face meet there with rounding
+// error, which would otherwise leave slivers of one inside or outside the other.
 void drop_thin(SpanList& spans, Real thin, const Vec3& direction);
 
 // One side of a CSG object: a closed shape and, optionally, its own material and a name for

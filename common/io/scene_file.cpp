@@ -63,6 +63,9 @@ struct Loader {
     Scene& scene;
     const std::map<std::string, std::shared_ptr<const Shape>>& shapes;
     std::map<std::string, int>& shape_uses;
+    // Reading /shapes itself: its entries are read in no order a file can rely on, so none
+    // may name another.
+    bool in_shapes = false;
 
     // The id of the material a "material" key names, keeping it on first use.
     MaterialId material(const Fields& f) const {
@@ -132,6 +135,8 @@ CsgOperand read_operand(const Loader& loader, const Fields& f) {
     std::shared_ptr<const Shape> base;
     if (f.text("type") == "instance") {
         f.only({"type", "name", "material", "shape", "transform"});
+        if (loader.in_shapes)
+            f.fail("type", "an operand of a shape in /shapes cannot name another shape; give the operand itself");
         const std::string name = f.text("shape");
         const auto it = loader.shapes.find(name);
         if (it == loader.shapes.end()) f.fail("shape", "no shape named \"" + name + "\" in /shapes");
@@ -188,6 +193,9 @@ void count_triangles(const Shape& shape, SceneSummary& summary) {
         summary.degenerate_triangles += mesh->dropped_degenerate();
     } else if (std::holds_alternative<Triangle>(shape)) {
         summary.triangles += 1;
+    } else if (const auto* csg = std::get_if<Csg>(&shape)) {  // its operands' own, not instances of /shapes
+        count_triangles(*csg->left().shape, summary);
+        count_triangles(*csg->right().shape, summary);
     }
 }
 
@@ -293,9 +301,11 @@ Scene load_scene_text(const std::string& text, const std::string& filename, cons
     const Loader loader{reader, materials, used, scene, shapes, shape_uses};
     if (top.has("shapes")) {
         const Fields all(reader, doc["shapes"], "/shapes");
+        Loader shapes_loader = loader;
+        shapes_loader.in_shapes = true;
         for (const auto& [name, s] : doc["shapes"].items())
-            shapes.emplace(name,
-                           std::make_shared<const Shape>(read_shape(loader, Fields(reader, s, "/shapes/" + name), {})));
+            shapes.emplace(name, std::make_shared<const Shape>(
+                                     read_shape(shapes_loader, Fields(reader, s, "/shapes/" + name), {})));
     }
 
     if (!top.has("surfaces")) top.fail("", "missing key 'surfaces'");

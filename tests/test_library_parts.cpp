@@ -1,0 +1,118 @@
+// Library code of chapters 13 and 14 that no exercise touches, tested in the common
+// executable so that the chapters' own tests all depend on the exercises (with the stubs,
+// every one of them fails): drop_thin and the refusal of operands that are not solids
+// (book §13), and the statistical image test of tools/ztest.hpp (book §14.6).
+#include "geometry/procedural.hpp"
+#include "geometry/shape.hpp"
+#include "io/scene_file.hpp"
+#include "support.hpp"
+#include "ztest.hpp"
+
+#include <memory>
+#include <string>
+#include <vector>
+
+using namespace rt;
+
+namespace {
+
+SpanList spans_at(std::initializer_list<std::pair<Real, Real>> pairs) {
+    SpanList s;
+    for (auto [a, b] : pairs) {
+        Span x;
+        x.in.t = a;
+        x.out.t = b;
+        s.push_back(x);
+    }
+    return s;
+}
+
+std::vector<std::pair<Real, Real>> ts(const SpanList& s) {
+    std::vector<std::pair<Real, Real>> out;
+    for (const Span& x : s) out.push_back({x.in.t, x.out.t});
+    return out;
+}
+
+using Pairs = std::vector<std::pair<Real, Real>>;
+
+std::shared_ptr<const Shape> share(Shape s) {
+    return std::make_shared<const Shape>(std::move(s));
+}
+
+}  // namespace
+
+TEST_CASE("drop_thin drops slivers of solid and closes slivers of air, in world lengths") {
+    SpanList s = spans_at({{0, 1}, {1 + Real(1e-9), 2}, {3, 3 + Real(1e-9)}, {4, 5}});
+    SpanList kept = s;
+    drop_thin(kept, Real(1e-6), Vec3(0, 2, 0));  // |d| = 2: thicknesses count double
+    CHECK(ts(kept) == Pairs{{0, 2}, {4, 5}});
+    kept = s;
+    drop_thin(kept, 0, Vec3(0, 2, 0));  // thin 0: everything stays
+    CHECK(kept.size() == 4);
+    // A span 0.4 long along d = (0, 0, 3) is 1.2 long in the world: kept at thin 1, not at 1.5.
+    SpanList w = spans_at({{0, Real(0.4)}});
+    drop_thin(w, 1, Vec3(0, 0, 3));
+    CHECK(w.size() == 1);
+    drop_thin(w, Real(1.5), Vec3(0, 0, 3));
+    CHECK(w.empty());
+}
+
+TEST_CASE("operands that are not closed solids are refused, naming them") {
+    const auto poly = share(Polygon({Vec3(0), Vec3(1, 0, 0), Vec3(0, 1, 0)}));
+    const auto ball = share(Sphere(Vec3(0), 1));
+    CHECK_THROWS_WITH_AS(Csg(CsgOp::union_of, {ball}, {poly, kNone, "sheet"}),
+                         doctest::Contains("\"sheet\" is not a closed solid: a polygon has no inside"),
+                         std::invalid_argument);
+    CHECK_THROWS_AS(Csg(CsgOp::union_of, {share(Triangle(Vec3(0), Vec3(1, 0, 0), Vec3(0, 1, 0)))}, {ball}),
+                    std::invalid_argument);
+    CHECK_THROWS_WITH_AS(Csg(CsgOp::difference, {ball}, {share(Mesh(terrain(Vec3(0), 2, Real(0.2), 4)))}),
+                         doctest::Contains("not closed"), std::invalid_argument);
+    CHECK_THROWS_AS(Csg(CsgOp::difference, {ball}, {share(Instance(poly, Affine::translate(Vec3(1, 0, 0))))}),
+                    std::invalid_argument);
+    // A closed mesh with one triangle removed is open.
+    MeshData cube = subdivided_cube(Vec3(0), 1, 1);
+    cube.triangles.pop_back();
+    CHECK_THROWS_AS(Csg(CsgOp::union_of, {ball}, {share(Mesh(cube))}), std::invalid_argument);
+
+    const std::string text = R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0]},
+ "surfaces": [{"type": "csg", "op": "difference", "operands": [
+   {"type": "sphere", "center": [0, 0, 0], "radius": 1},
+   {"type": "polygon", "name": "lid", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]]}]}]})";
+    try {
+        load_scene_text(text, "lid.json", ".");
+        FAIL("expected a SceneError");
+    } catch (const SceneError& e) {
+        const std::string what = e.what();
+        CHECK(what.find("lid.json:4:4: /surfaces/0/operands/1: a CSG operand must be a closed solid: a polygon has "
+                        "no inside") == 0);
+        CHECK(what.find('\n') == std::string::npos);
+    }
+}
+
+TEST_CASE("the statistical test: Sidak's level, the z-test's p, and a verdict on known numbers") {
+    // Sidak: 1 - (1 - alpha)^(1/N); for small alpha close to alpha / N.
+    CHECK(stat::sidak(0.01, 1) == doctest::Approx(0.01));
+    CHECK(stat::sidak(0.01, 10000) == doctest::Approx(1.005e-6).epsilon(1e-3));
+    // The normal distribution's two-sided tails: P(|Z| > 1.959964) = 0.05, P(|Z| > 3.290527) = 0.001.
+    // An average of 4 renders of variance 4 has standard deviation 1.
+    CHECK(stat::z_p(1.959964, 4, 0, 4, 0) == doctest::Approx(0.05).epsilon(1e-5));
+    CHECK(stat::z_p(-3.290527, 4, 0, 4, 0) == doctest::Approx(0.001).epsilon(1e-5));
+    CHECK(stat::z_p(5, 8, 5, 0, 0) == 1);
+    // One list's variance about the mean of 4.
+    const stat::MeanVar mv = stat::mean_var({{1, 5}, {2, 5}, {3, 5}, {4, 5}});
+    CHECK(mv.mean[0] == doctest::Approx(2.5));
+    CHECK(mv.var[0] == doctest::Approx((1.5 * 1.5 * 2 + 0.5 * 0.5 * 2) / 3));
+    CHECK(mv.var[1] == 0);
+    // 1000 values, all agreeing but one far off: it fails, and 0.1 % of 1000 may.
+    const stat::MeanVar ref{std::vector<double>(1000, 0.5), std::vector<double>(1000, 1e-3)};
+    std::vector<std::vector<double>> renders(8, std::vector<double>(1000, 0.5));
+    for (auto& r : renders) r[17] = 0.8;
+    stat::Verdict v = stat::compare(renders, ref, 0.01, 0.001, 0);
+    CHECK(v.failed == 1);
+    CHECK(v.allowed == 1);
+    CHECK(v.pass());
+    for (auto& r : renders) r[18] = 0.2;
+    v = stat::compare(renders, ref, 0.01, 0.001, 0);
+    CHECK(v.failed == 2);
+    CHECK_FALSE(v.pass());
+}
