@@ -12,6 +12,7 @@
 // all rays, and tests a tenth of the rays at 10^5 (a single run there takes seconds).
 // ./lab bench complexity runs it and plots the CSV (bench/complexity.gnuplot).
 #include "accel/accel.hpp"
+#include "fit.hpp"
 #include "geometry/procedural.hpp"
 
 #include <pcg_random.hpp>
@@ -160,23 +161,16 @@ int main(int argc, char** argv) {
     std::printf("\nslopes of log-log fits over the sizes measured (query, build):\n");
     for (const char* input : {"terrain", "soup", "stadium"})
         for (AccelKind kind : kAccelKinds) {
-            double sx = 0, sy = 0, sb = 0, sxx = 0, sxy = 0, sxb = 0;
-            int m = 0;
+            std::vector<double> n, query, build;
             for (const Row& r : rows)
                 if (r.input == input && r.structure == accel_name(kind) && r.build_s > 0) {
-                    const double x = std::log10(double(r.triangles));
-                    sx += x;
-                    sxx += x * x;
-                    sy += std::log10(r.ns_per_ray);
-                    sxy += x * std::log10(r.ns_per_ray);
-                    sb += std::log10(std::max(r.build_s, 1e-7));
-                    sxb += x * std::log10(std::max(r.build_s, 1e-7));
-                    ++m;
+                    n.push_back(double(r.triangles));
+                    query.push_back(r.ns_per_ray);
+                    build.push_back(std::max(r.build_s, 1e-7));
                 }
-            if (m < 2) continue;
-            const double d = m * sxx - sx * sx;
-            std::printf("  %-8s %-13s query %5.2f  build %5.2f\n", input, accel_name(kind), (m * sxy - sx * sy) / d,
-                        kind == AccelKind::none ? 0.0 : (m * sxb - sx * sb) / d);
+            if (n.size() < 2) continue;
+            std::printf("  %-8s %-13s query %5.2f  build %5.2f\n", input, accel_name(kind),
+                        bench::loglog_slope(n, query), kind == AccelKind::none ? 0.0 : bench::loglog_slope(n, build));
         }
 
     if (!csv_path.empty()) {
