@@ -11,6 +11,7 @@
 #include "support.hpp"
 #include "support/accel_check.hpp"
 #include "support/source_dir.hpp"
+#include "support/span_check.hpp"
 
 #include <cmath>
 #include <functional>
@@ -18,46 +19,19 @@
 
 using namespace rt;
 using rt::test::kEps;
+using rt::test::Pairs;
+using rt::test::share;
+using rt::test::ts;
 
 namespace {
 
 const std::string kScenes = rt::test::source_dir() + "/chapters/ch13_csg/scenes/";
 
-HitRecord at(Real t, int tag = 0) {
-    HitRecord r;
-    r.t = t;
-    r.primitive = std::uint32_t(tag);  // which end of which list, to check where ends came from
-    return r;
-}
-
-// Spans from (in, out) pairs; the ends are tagged side*100 + 2*k (+1 for the out end).
-SpanList list(std::initializer_list<std::pair<Real, Real>> pairs, int side) {
-    SpanList s;
-    int k = 0;
-    for (auto [a, b] : pairs) {
-        s.push_back(Span{at(a, side * 100 + 2 * k), at(b, side * 100 + 2 * k + 1)});
-        ++k;
-    }
-    return s;
-}
-
-std::vector<std::pair<Real, Real>> ts(const SpanList& s) {
-    std::vector<std::pair<Real, Real>> out;
-    for (const Span& x : s) out.push_back({x.in.t, x.out.t});
-    return out;
-}
-
-using Pairs = std::vector<std::pair<Real, Real>>;
-
-std::shared_ptr<const Shape> share(Shape s) {
-    return std::make_shared<const Shape>(std::move(s));
-}
-
 }  // namespace
 
 TEST_CASE("13.1 combine: empty lists, touching, nested and identical spans") {
     const SpanList none;
-    const SpanList a = list({{0, 2}}, 0);
+    const SpanList a = rt::test::span_list({{0, 2}}, 0);
     for (CsgOp op : {CsgOp::union_of, CsgOp::intersection, CsgOp::difference}) {
         CAPTURE(csg_op_name(op));
         CHECK(combine(op, none, none).empty());
@@ -67,7 +41,7 @@ TEST_CASE("13.1 combine: empty lists, touching, nested and identical spans") {
 
     // Touching: [0, 2] and [2, 4] are one solid in a union, meet in no volume, and the
     // difference keeps the first whole.
-    const SpanList b = list({{2, 4}}, 1);
+    const SpanList b = rt::test::span_list({{2, 4}}, 1);
     CHECK(ts(combine(CsgOp::union_of, a, b)) == Pairs{{0, 4}});
     const SpanList touch = combine(CsgOp::intersection, a, b);
     CHECK(ts(touch) == Pairs{{2, 2}});  // no thickness: drop_thin removes it
@@ -77,8 +51,8 @@ TEST_CASE("13.1 combine: empty lists, touching, nested and identical spans") {
     CHECK(ts(combine(CsgOp::difference, a, b)) == Pairs{{0, 2}});
 
     // Nested: two spans of b inside one of c.
-    const SpanList c = list({{0, 10}}, 0);
-    const SpanList holes = list({{2, 3}, {5, 6}}, 1);
+    const SpanList c = rt::test::span_list({{0, 10}}, 0);
+    const SpanList holes = rt::test::span_list({{2, 3}, {5, 6}}, 1);
     CHECK(ts(combine(CsgOp::union_of, c, holes)) == Pairs{{0, 10}});
     CHECK(ts(combine(CsgOp::intersection, c, holes)) == Pairs{{2, 3}, {5, 6}});
     const SpanList cut = combine(CsgOp::difference, c, holes);
@@ -93,8 +67,8 @@ TEST_CASE("13.1 combine: empty lists, touching, nested and identical spans") {
     CHECK(combine(CsgOp::difference, holes, c).empty());
 
     // Identical operands.
-    const SpanList same = list({{1, 2}}, 1);
-    const SpanList one = list({{1, 2}}, 0);
+    const SpanList same = rt::test::span_list({{1, 2}}, 1);
+    const SpanList one = rt::test::span_list({{1, 2}}, 0);
     CHECK(ts(combine(CsgOp::union_of, one, same)) == Pairs{{1, 2}});
     CHECK(ts(combine(CsgOp::intersection, one, same)) == Pairs{{1, 2}});
     SpanList nothing = combine(CsgOp::difference, one, same);
@@ -102,7 +76,7 @@ TEST_CASE("13.1 combine: empty lists, touching, nested and identical spans") {
     CHECK(nothing.empty());
 
     // Overlapping, several spans each side.
-    const SpanList p = list({{0, 3}, {5, 8}}, 0), q = list({{1, 6}, {7, 9}}, 1);
+    const SpanList p = rt::test::span_list({{0, 3}, {5, 8}}, 0), q = rt::test::span_list({{1, 6}, {7, 9}}, 1);
     CHECK(ts(combine(CsgOp::union_of, p, q)) == Pairs{{0, 9}});
     CHECK(ts(combine(CsgOp::intersection, p, q)) == Pairs{{1, 3}, {5, 6}, {7, 8}});
     CHECK(ts(combine(CsgOp::difference, p, q)) == Pairs{{0, 1}, {6, 7}});
@@ -112,7 +86,8 @@ TEST_CASE("13.1 combine: empty lists, touching, nested and identical spans") {
 TEST_CASE("13.2 mesh_spans: crossings grouped at one t, silhouettes, strays") {
     const Vec3 d(0, 0, -1);
     auto cross = [](Real t, Real nz) {
-        HitRecord r = at(t);
+        HitRecord r;
+        r.t = t;
         r.normal = Vec3(0, 0, nz);
         return r;
     };

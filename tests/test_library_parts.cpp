@@ -6,6 +6,7 @@
 #include "geometry/shape.hpp"
 #include "io/scene_file.hpp"
 #include "support.hpp"
+#include "support/span_check.hpp"
 #include "ztest.hpp"
 
 #include <memory>
@@ -14,35 +15,13 @@
 
 using namespace rt;
 
-namespace {
-
-SpanList spans_at(std::initializer_list<std::pair<Real, Real>> pairs) {
-    SpanList s;
-    for (auto [a, b] : pairs) {
-        Span x;
-        x.in.t = a;
-        x.out.t = b;
-        s.push_back(x);
-    }
-    return s;
-}
-
-std::vector<std::pair<Real, Real>> ts(const SpanList& s) {
-    std::vector<std::pair<Real, Real>> out;
-    for (const Span& x : s) out.push_back({x.in.t, x.out.t});
-    return out;
-}
-
-using Pairs = std::vector<std::pair<Real, Real>>;
-
-std::shared_ptr<const Shape> share(Shape s) {
-    return std::make_shared<const Shape>(std::move(s));
-}
-
-}  // namespace
+using rt::test::Pairs;
+using rt::test::share;
+using rt::test::span_list;
+using rt::test::ts;
 
 TEST_CASE("drop_thin drops slivers of solid and closes slivers of air, in world lengths") {
-    SpanList s = spans_at({{0, 1}, {1 + Real(1e-9), 2}, {3, 3 + Real(1e-9)}, {4, 5}});
+    SpanList s = span_list({{0, 1}, {1 + Real(1e-9), 2}, {3, 3 + Real(1e-9)}, {4, 5}});
     SpanList kept = s;
     drop_thin(kept, Real(1e-6), Vec3(0, 2, 0));  // |d| = 2: thicknesses count double
     CHECK(ts(kept) == Pairs{{0, 2}, {4, 5}});
@@ -50,7 +29,7 @@ TEST_CASE("drop_thin drops slivers of solid and closes slivers of air, in world 
     drop_thin(kept, 0, Vec3(0, 2, 0));  // thin 0: everything stays
     CHECK(kept.size() == 4);
     // A span 0.4 long along d = (0, 0, 3) is 1.2 long in the world: kept at thin 1, not at 1.5.
-    SpanList w = spans_at({{0, Real(0.4)}});
+    SpanList w = span_list({{0, Real(0.4)}});
     drop_thin(w, 1, Vec3(0, 0, 3));
     CHECK(w.size() == 1);
     drop_thin(w, Real(1.5), Vec3(0, 0, 3));
