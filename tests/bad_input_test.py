@@ -217,6 +217,31 @@ scene("aa_samples_not_square", {"/antialiasing": {"pattern": "jittered", "sample
       "the jittered pattern takes n x n samples")
 scene("aa_unknown_key", {"/antialiasing": {"sampler": "random"}}, "unknown key 'sampler'")
 scene("aa_not_object", {"/antialiasing": "jittered"}, "/antialiasing", "must be an object")
+# Chapters 15-18: area lights, the thin lens, glossy mirrors, motion and the shutter.
+PAR = {"type": "parallelogram", "corner": [-1, 4, -1], "edge_a": [2, 0, 0], "edge_b": [0, 0, 2]}
+scene("parallelogram_parallel_edges", {"/lights/0": dict(PAR, edge_b=[4, 0, 0])}, "/lights/0/edge_b",
+      "is parallel to edge_a")
+scene("parallelogram_zero_edge", {"/lights/0": dict(PAR, edge_a=[0, 0, 0])}, "/lights/0/edge_a", "must not be zero")
+scene("parallelogram_far", {"/lights/0": dict(PAR, edge_a=[9e7, 0, 0], corner=[9e7, 0, 0])}, "/lights/0",
+      "reaches past the coordinate limits")
+scene("parallelogram_missing_edge", {"/lights/0": {"type": "parallelogram", "corner": [0, 4, 0], "edge_a": [1, 0, 0]}},
+      "missing key 'edge_b'")
+scene("aperture_negative", {"/camera/aperture": -0.1}, "/camera/aperture", "aperture must be in 0..1e8")
+scene("aperture_orthographic", {"/camera/projection": "orthographic", "/camera/aperture": 0.2},
+      "a lens (aperture > 0) needs a perspective camera")
+scene("lens_unknown", {"/camera/aperture": 0.2, "/camera/lens": "hexagon"}, "/camera/lens",
+      "must be \"square\" or \"disk\"")
+scene("lens_without_aperture", {"/camera/lens": "disk"}, "/camera/lens", "a lens needs an aperture > 0")
+scene("focus_zero", {"/camera/aperture": 0.2, "/camera/focus_distance": 0}, "/camera/focus_distance", "length must be in")
+scene("shutter_backwards", {"/camera/shutter": [0.6, 0.2]}, "/camera/shutter", "closes before it opens")
+scene("shutter_past_one", {"/camera/shutter": [0, 1.5]}, "/camera/shutter", "shutter time must be in 0..1")
+scene("shutter_one_number", {"/camera/shutter": 0.5}, "/camera/shutter", "must be [open, close]")
+scene("shutter_text", {"/camera/shutter": ["open", 1]}, "/camera/shutter", "must be [open, close]")
+scene("glossy_without_mirror", {"/materials/m/glossy": 0.2}, "/materials/m/glossy", "only a mirror")
+scene("glossy_huge", {"/materials/m/mirror": [1, 1, 1], "/materials/m/glossy": 40}, "/materials/m/glossy",
+      "glossy width must be in 0..16")
+scene("moves_to_far", {S + "/moves_to": [0, 1e9, 0]}, S + "/moves_to/1", "coordinate must be in")
+scene("moves_to_text", {S + "/moves_to": "left"}, S + "/moves_to", "must be an array of 3 numbers")
 L = "/lights/0"
 scene("light_colour_huge", {L + "/color": [1e39, 1, 1]}, L + "/color/0", "radiance must be in 0..1000000")
 scene("light_colour_negative", {L + "/color": [1, -1, 1]}, "radiance")
@@ -246,7 +271,7 @@ scene("fov_negative", {C + "/fov": -10}, "field of view")
 scene("projection_unknown", {C + "/projection": "fisheye"}, "must be \"perspective\" or \"orthographic\"")
 scene("window_height_zero", {C + "/projection": "orthographic", C + "/window_height": 0}, "length must be in")
 scene("focal_distance_negative", {C + "/focal_distance": -1}, C + "/focal_distance", "length")
-scene("camera_unknown_key", {C + "/aperture": 1}, "unknown key 'aperture'")
+scene("camera_unknown_key", {C + "/zoom": 1}, "unknown key 'zoom'")
 scene("shading_unknown", {"/shading": "toon"}, "unknown shading \"toon\"")
 scene("shading_number", {"/shading": 3}, "/shading", "must be a string")
 scene("top_unknown_key", {"/sky": 1}, "/sky", "unknown key 'sky'")

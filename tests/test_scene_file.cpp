@@ -74,7 +74,7 @@ TEST_CASE("scene file errors name the file, line, column and key") {
     CHECK(load_error(prefix + R"("surfaces": [{"type": "mesh", "file": "no/such.obj"}]})")
               .find("/surfaces/0/file: mesh ./no/such.obj: no such file") != std::string::npos);
     CHECK(load_error(prefix + R"("lights": [{"type": "spot", "position": [0,0,0]}], "surfaces": []})")
-              .find("/lights/0/type: unknown light type \"spot\" (expected point or directional)") !=
+              .find("/lights/0/type: unknown light type \"spot\" (expected point, directional or parallelogram)") !=
           std::string::npos);
     CHECK(load_error(prefix + R"("materials": {"m": {"diffuse": [1,1,1], "shine": 3}}, "surfaces": []})")
               .find("/materials/m/shine: unknown key 'shine'") != std::string::npos);

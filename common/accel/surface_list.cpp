@@ -8,6 +8,7 @@ SurfaceId SurfaceList::add(Shape shape, MaterialId material, std::string name) {
     surfaces_.push_back(Surface{std::move(shape), material, id});
     names_.push_back(std::move(name));
     box_.expand(surfaces_.back().bounding_box());
+    moves_ = moves_ || rt::moves(surfaces_.back().shape);
     return id;
 }
 

@@ -18,6 +18,8 @@ public:
     // Any hit in the interval, stopping at the first: the query of shadow rays.
     bool occluded(const Ray& ray, Interval interval) const;
     Box bounding_box() const { return box_; }
+    // Whether any surface moves (chapter 18): rays then need a time, and otherwise do not.
+    bool moves() const { return moves_; }
 
     std::size_t size() const { return surfaces_.size(); }
     bool empty() const { return surfaces_.empty(); }
@@ -30,6 +32,7 @@ private:
     std::vector<Surface> surfaces_;
     std::vector<std::string> names_;
     Box box_;
+    bool moves_ = false;
 };
 
 }  // namespace rt

@@ -123,6 +123,9 @@ json stats_json(const std::string& chapter, const SceneEntry& entry, const Scene
     const double mrays = r.seconds > 0 ? double(r.counters.total()) / r.seconds / 1e6 : 0.0;
     json rays{{"total", r.counters.total()}};
     for (std::size_t k = 0; k < kRayKinds; ++k) rays[kRayKindNames[k]] = r.counters.rays[k];
+    // Random numbers drawn per dimension: zero for every effect the scene does not use.
+    json draws;
+    for (std::size_t d = 0; d < kDimensions; ++d) draws[kDimensionNames[d]] = r.counters.draws[d];
     json j{{"chapter", chapter},
            {"scene", entry.name},
            {"width", o.width},
@@ -135,6 +138,7 @@ json stats_json(const std::string& chapter, const SceneEntry& entry, const Scene
            {"track", RTLAB_TRACK_NAME},
            {"from_solutions", RTLAB_SOLVED_TEXT},
            {"rays", rays},
+           {"random_numbers", draws},
            {"shading", {{"light_terms", r.counters.light_terms}, {"specular_terms", r.counters.specular_terms}}},
            {"nonfinite_samples", r.counters.nonfinite_samples},
            {"accel", accel_json(scene)},

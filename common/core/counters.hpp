@@ -1,6 +1,8 @@
 #pragma once
 // Rays cast, by kind, and shading work done. Each render tile counts into its own copy and
 // the copies are summed at the end, so counting costs no synchronisation on the hot path.
+#include "core/sampler.hpp"
+
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -23,6 +25,9 @@ struct RayCounters {
     // Search work (core/bvh.hpp, TraversalCount): boxes and primitives tested.
     std::uint64_t nodes_visited = 0;
     std::uint64_t primitives_tested = 0;
+    // Random numbers drawn, by dimension: a scene that does not use an effect (no lens, nothing
+    // moving, point lights) draws none in its dimension.
+    std::array<std::uint64_t, kDimensions> draws{};
 
     void count(RayKind kind) { ++rays[std::size_t(kind)]; }
     std::uint64_t of(RayKind kind) const { return rays[std::size_t(kind)]; }
@@ -38,6 +43,7 @@ struct RayCounters {
         nonfinite_samples += o.nonfinite_samples;
         nodes_visited += o.nodes_visited;
         primitives_tested += o.primitives_tested;
+        for (std::size_t d = 0; d < kDimensions; ++d) draws[d] += o.draws[d];
         return *this;
     }
 };

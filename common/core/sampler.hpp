@@ -10,6 +10,8 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <numeric>
+#include <vector>
 
 namespace rt {
 
@@ -18,6 +20,15 @@ namespace rt {
 // step); keeping them apart here is what makes that possible without new signatures.
 enum class Dimension : std::uint8_t { pixel, lens, time, light, glossy, other };
 inline constexpr std::size_t kDimensions = 6;
+inline constexpr const char* kDimensionNames[kDimensions] = {"pixel", "lens", "time", "light", "glossy", "other"};
+
+// How a pixel's samples divide each dimension (book §14.2, §15.2): not at all (random),
+// into strata sampled at their centres (regular), or at a random place in each (jittered).
+enum class Strata : std::uint8_t { none, centres, jittered };
+
+// Exercise 15.1: put `order` into a uniformly random order (Fisher-Yates), drawing whole
+// numbers from `random`: random(b) is uniform in 0, 1, ..., b - 1.
+void fisher_yates(std::vector<std::uint32_t>& order, pcg32& random);
 
 class Sampler {
 public:
@@ -25,16 +36,47 @@ public:
         for (std::size_t d = 0; d < kDimensions; ++d) streams_[d] = pcg32(seed, pixel_index * kDimensions + d);
     }
 
-    // Starts sample `index` of this pixel's samples (0, 1, ..., spp - 1).
+    // This pixel takes `count` samples, each dimension divided into `count` strata (a line)
+    // or side x side of them (a square; side = 0 when count is not a square), as `strata` says.
+    void set_strata(int count, int side, Strata strata) {
+        count_ = count;
+        side_ = side;
+        strata_ = side > 0 || strata == Strata::none ? strata : Strata::none;
+    }
+    int count() const { return count_; }
+    int side() const { return side_; }
+    Strata strata() const { return strata_; }
+
+    // Starts sample `index` of this pixel's samples (0, 1, ..., count - 1).
     void start_sample(int index) { sample_ = index; }
     int sample_index() const { return sample_; }
 
     // Uniform in [0, 1), from dimension d's own stream.
-    Real get1(Dimension d) { return to_unit(streams_[std::size_t(d)]); }
+    Real get1(Dimension d) {
+        ++draws_[std::size_t(d)];
+        return to_unit(streams_[std::size_t(d)]);
+    }
     Vec2 get2(Dimension d) {
         const Real a = get1(d);
         return Vec2(a, get1(d));
     }
+
+    // Which of the pixel's strata the current sample takes in dimension d. The pixel's own
+    // dimension goes through its strata in order; every other one in an order of its own,
+    // shuffled once per pixel, so that no dimension's stratum follows another's (book §15.2).
+    int stratum(Dimension d) {
+        if (d == Dimension::pixel) return sample_;
+        std::vector<std::uint32_t>& order = orders_[std::size_t(d)];
+        if (order.empty()) {
+            order.resize(std::size_t(count_));
+            std::iota(order.begin(), order.end(), 0u);
+            fisher_yates(order, streams_[std::size_t(d)]);
+        }
+        return int(order[std::size_t(sample_)]);
+    }
+
+    // How many numbers each dimension has drawn (--stats: what a scene's effects cost).
+    const std::array<std::uint64_t, kDimensions>& draws() const { return draws_; }
 
 private:
     static Real to_unit(pcg32& rng) {
@@ -51,7 +93,12 @@ private:
     }
 
     std::array<pcg32, kDimensions> streams_;
+    std::array<std::vector<std::uint32_t>, kDimensions> orders_;
+    std::array<std::uint64_t, kDimensions> draws_{};
     int sample_ = 0;
+    int count_ = 1;
+    int side_ = 1;
+    Strata strata_ = Strata::none;
 };
 
 }  // namespace rt

@@ -78,7 +78,8 @@ void operand_spans(const CsgOperand& operand, std::uint32_t first_leaf, const Ra
         }
 }
 
-SpanList sphere_spans(const Sphere& s, const Ray& ray) {
+SpanList sphere_spans(const Sphere& sphere, const Ray& ray) {
+    const Sphere s = sphere.moves() ? sphere.at(ray.time) : sphere;  // where it is at the ray's time
     Real t0, t1;
     if (!sphere_roots(ray, s.center, s.radius, t0, t1)) return {};
     const SurfaceRef none{kNone, kNone};

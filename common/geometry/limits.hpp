@@ -31,6 +31,9 @@ inline constexpr Range index_of_refraction{"index of refraction", 0.01, 100, "",
 inline constexpr Range recursion_depth{"recursion depth", 0, 64, "", "/properties/max_depth"};
 inline constexpr Range angle{"angle", -3600, 3600, "degrees", "/$defs/transform_step/properties/degrees"};
 inline constexpr Range field_of_view{"field of view", 1e-3, 179.9, "degrees", "/$defs/camera/properties/fov"};
+inline constexpr Range aperture{"aperture", 0, 1e8, "", "/$defs/camera/properties/aperture"};
+inline constexpr Range shutter_time{"shutter time", 0, 1, "", "/$defs/camera/properties/shutter/items"};
+inline constexpr Range glossy_width{"glossy width", 0, 16, "", "/$defs/material/properties/glossy"};
 // Counts in a scene file.
 inline constexpr Range triangle_vertices{"triangle vertices", 3, 3, "", "/$defs/surface/oneOf/1/properties/vertices"};
 inline constexpr Range polygon_vertices{"polygon vertices", 3, 100000, "",
@@ -60,21 +63,39 @@ inline constexpr Range image_samples{"samples per image", 1, 4294967296.0, "widt
 inline constexpr Range threads{"threads", 0, 1024, "", ""};
 // @book-end
 
-inline constexpr Range all[] = {coordinate,        length,
-                                reflectance,       radiance,
-                                exponent,          index_of_refraction,
-                                recursion_depth,   angle,
-                                field_of_view,     triangle_vertices,
-                                polygon_vertices,  icosphere_subdivisions,
-                                cube_subdivisions, terrain_cells,
-                                soup_count,        soup_seed,
-                                csg_operands,      csg_thin,
-                                json_depth,        scene_file_bytes,
-                                obj_file_bytes,    obj_face_corners,
-                                mesh_vertices,     mesh_triangles,
-                                image_file_bytes,  image_side,
-                                image_pixels,      samples_per_pixel,
-                                image_samples,     threads};
+inline constexpr Range all[] = {coordinate,
+                                length,
+                                reflectance,
+                                radiance,
+                                exponent,
+                                index_of_refraction,
+                                recursion_depth,
+                                angle,
+                                field_of_view,
+                                aperture,
+                                shutter_time,
+                                glossy_width,
+                                triangle_vertices,
+                                polygon_vertices,
+                                icosphere_subdivisions,
+                                cube_subdivisions,
+                                terrain_cells,
+                                soup_count,
+                                soup_seed,
+                                csg_operands,
+                                csg_thin,
+                                json_depth,
+                                scene_file_bytes,
+                                obj_file_bytes,
+                                obj_face_corners,
+                                mesh_vertices,
+                                mesh_triangles,
+                                image_file_bytes,
+                                image_side,
+                                image_pixels,
+                                samples_per_pixel,
+                                image_samples,
+                                threads};
 
 // True if `value` is in the range (a NaN never is).
 inline constexpr bool contains(const Range& r, double value) {

@@ -12,4 +12,11 @@ std::size_t memory_bytes(const Shape& shape) {
     return sizeof(Shape);
 }
 
+bool moves(const Shape& shape) {
+    if (const auto* sphere = std::get_if<Sphere>(&shape)) return sphere->moves();
+    if (const auto* instance = std::get_if<Instance>(&shape)) return moves(instance->base());
+    if (const auto* csg = std::get_if<Csg>(&shape)) return moves(*csg->left().shape) || moves(*csg->right().shape);
+    return false;
+}
+
 }  // namespace rt

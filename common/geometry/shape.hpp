@@ -39,6 +39,15 @@ bool hit_record(const S& shape, const Ray& ray, Interval interval, SurfaceRef wh
     return true;
 }
 
+// A moving sphere (chapter 18) is tested where it stands at the ray's time.
+inline bool hit_record(const Sphere& sphere, const Ray& ray, Interval interval, SurfaceRef who, HitRecord& rec) {
+    const Sphere s = sphere.moves() ? sphere.at(ray.time) : sphere;
+    SphereHit h;
+    if (!hit(s, ray, interval, h)) return false;
+    rec = record(s, ray, h, who);
+    return true;
+}
+
 inline bool hit_record(const Shape& shape, const Ray& ray, Interval interval, SurfaceRef who, HitRecord& rec) {
     return std::visit([&](const auto& s) { return hit_record(s, ray, interval, who, rec); }, shape);
 }
@@ -51,9 +60,17 @@ bool occluded(const S& shape, const Ray& ray, Interval interval) {
     return hit(shape, ray, interval, h);
 }
 
+inline bool occluded(const Sphere& sphere, const Ray& ray, Interval interval) {
+    SphereHit h;
+    return hit(sphere.moves() ? sphere.at(ray.time) : sphere, ray, interval, h);
+}
+
 inline bool occluded(const Shape& shape, const Ray& ray, Interval interval) {
     return std::visit([&](const auto& s) { return occluded(s, ray, interval); }, shape);
 }
+
+// Whether anything in the shape moves (chapter 18): only then do rays need a time.
+bool moves(const Shape& shape);
 
 inline Box bounding_box(const Shape& shape) {
     return std::visit([](const auto& s) { return bounding_box(s); }, shape);

@@ -5,9 +5,12 @@
 
 namespace rt {
 
-Sphere::Sphere(const Vec3& c, Real r) : center(c), radius(r) {
+Sphere::Sphere(const Vec3& c, Real r, const Vec3& m) : center(c), radius(r), motion(m) {
     if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z))
         throw std::invalid_argument("sphere: centre must be finite");
+    const Vec3 end = c + m;
+    if (!std::isfinite(end.x) || !std::isfinite(end.y) || !std::isfinite(end.z))
+        throw std::invalid_argument("sphere: motion must be finite");
     if (!(r > 0) || !std::isfinite(r)) throw std::invalid_argument("sphere: radius must be finite and > 0");
 }
 
@@ -26,6 +29,7 @@ HitRecord record(const Sphere& s, const Ray& ray, const SphereHit& h, SurfaceRef
 }
 
 Box bounding_box(const Sphere& s) {
+    if (s.moves()) return swept_box(s);
     const Vec3 r(s.radius);
     return Box{s.center - r, s.center + r};
 }

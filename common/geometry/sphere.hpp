@@ -13,15 +13,27 @@ struct SphereHit {
     Real t;
 };
 
-// A sphere: geometry only. What it is made of is bound to it by a Surface.
+// A sphere: geometry only. What it is made of is bound to it by a Surface. A sphere can
+// move (chapter 18): its centre goes from `center` at time 0 to `center + motion` at time
+// 1 at constant speed, and a ray sees it where it is at the ray's time.
 struct Sphere {
     using Hit = SphereHit;  // what its test reports
 
     Vec3 center;
     Real radius;
+    Vec3 motion{0};
 
-    // Throws std::invalid_argument unless the centre is finite and the radius > 0.
-    Sphere(const Vec3& center, Real radius);
+    // Throws std::invalid_argument unless the centre and motion are finite and the radius > 0.
+    Sphere(const Vec3& center, Real radius, const Vec3& motion = Vec3(0));
+
+    bool moves() const { return motion != Vec3(0); }
+    // The sphere standing where this one is at `time`.
+    Sphere at(Real time) const {
+        Sphere s = *this;
+        s.center = center + time * motion;
+        s.motion = Vec3(0);
+        return s;
+    }
 };
 
 // Both roots of |e + t d - c|^2 = R^2, t_near <= t_far. False when the line misses
@@ -40,6 +52,11 @@ bool hit(const Sphere& sphere, const Ray& ray, Interval interval, SphereHit& res
 // The whole record for a sphere hit: point on the sphere, unit outward normal.
 HitRecord record(const Sphere& sphere, const Ray& ray, const SphereHit& h, SurfaceRef who = {});
 
+// The box of a sphere; of a moving one, the box of every place it passes through in [0, 1]
+// (exercise 18.2), so that a search structure built once stays exact at every time.
 Box bounding_box(const Sphere& sphere);
+
+// Exercise 18.2: the box that holds a moving sphere at every time in [0, 1].
+Box swept_box(const Sphere& sphere);
 
 }  // namespace rt

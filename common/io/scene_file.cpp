@@ -19,7 +19,8 @@ namespace {
 using nlohmann::json;
 
 Camera read_camera(const Fields& f) {
-    f.only({"projection", "eye", "target", "up", "fov", "window_height", "focal_distance"});
+    f.only({"projection", "eye", "target", "up", "fov", "window_height", "focal_distance", "aperture", "focus_distance",
+            "lens", "shutter"});
     Camera cam;
     const std::string projection = f.text("projection", "perspective");
     if (projection == "orthographic")
@@ -32,6 +33,29 @@ Camera read_camera(const Fields& f) {
     cam.vertical_fov_degrees = f.number("fov", limits::field_of_view, cam.vertical_fov_degrees);
     cam.window_height = f.length("window_height", cam.window_height);
     cam.focal_distance = f.length("focal_distance", cam.focal_distance);
+    // Chapter 16: a thin lens; chapter 18: the shutter interval.
+    cam.aperture = f.number("aperture", limits::aperture, cam.aperture);
+    cam.focus_distance = f.length("focus_distance", cam.focus_distance);
+    const std::string lens = f.text("lens", "square");
+    if (lens == "disk")
+        cam.lens = LensShape::disk;
+    else if (lens != "square")
+        f.fail("lens", "must be \"square\" or \"disk\", not \"" + lens + "\"");
+    if ((f.has("focus_distance") || f.has("lens")) && !(cam.aperture > 0))
+        f.fail(f.has("lens") ? "lens" : "focus_distance", "a lens needs an aperture > 0");
+    if (f.has("shutter")) {
+        const json& v = f.value()["shutter"];
+        if (!v.is_array() || v.size() != 2) f.fail("shutter", "must be [open, close], two times in [0, 1]");
+        const auto at = [&](std::size_t k) {
+            if (!v[k].is_number()) f.fail("shutter", "must be [open, close], two times in [0, 1]");
+            const double x = v[k].get<double>();
+            if (!limits::contains(limits::shutter_time, x)) f.fail("shutter", limits::refuse(limits::shutter_time, x));
+            return Real(x);
+        };
+        cam.shutter_open = at(0);
+        cam.shutter_close = at(1);
+        if (!(cam.shutter_open <= cam.shutter_close)) f.fail("shutter", "closes before it opens");
+    }
     try {
         cam.validate();
     } catch (const std::invalid_argument& e) {

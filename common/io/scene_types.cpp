@@ -4,7 +4,7 @@ namespace rt {
 
 const std::vector<SurfaceType>& surface_types() {
     static const std::vector<SurfaceType> types = {
-        {"sphere", {"center", "radius"}, read_sphere},
+        {"sphere", {"center", "radius", "moves_to"}, read_sphere},
         {"triangle", {"vertices"}, read_triangle},
         {"polygon", {"vertices"}, read_polygon},
         {"mesh", {"file", "scale", "translate"}, read_mesh_file},
@@ -21,6 +21,7 @@ const std::vector<LightType>& light_types() {
     static const std::vector<LightType> types = {
         {"point", {"position"}, read_point_light},
         {"directional", {"direction"}, read_directional_light},
+        {"parallelogram", {"corner", "edge_a", "edge_b"}, read_parallelogram_light},
     };
     return types;
 }

@@ -49,6 +49,7 @@ Shape read_soup(const Fields& f);
 Shape read_box(const Fields& f);
 Light read_point_light(const Fields& f);
 Light read_directional_light(const Fields& f);
+Light read_parallelogram_light(const Fields& f);
 // Materials have one kind so far; its keys are checked here too.
 Material read_material(const Fields& f);
 // A list of transform steps at `key` (io/types/transform.cpp); fails for a singular result.

@@ -8,7 +8,8 @@ namespace rt {
 Ray View::ray(const CameraSample& sample) const {
     const Vec2 uv = window_point(sample.film.x, sample.film.y, nx, ny, window);
     Ray r = projection == Projection::orthographic ? orthographic_ray(eye, uvw, uv)
-                                                   : perspective_ray(eye, uvw, focal_distance, uv);
+            : has_lens() ? thin_lens_ray(eye, uvw, focal_distance, uv, aperture, focus, sample.lens)
+                         : perspective_ray(eye, uvw, focal_distance, uv);
     r.time = sample.time;
     return r;
 }
@@ -23,6 +24,12 @@ void Camera::validate() const {
         throw std::invalid_argument("camera: vertical field of view must be in (0, 180) degrees");
     if (projection == Projection::orthographic && !(window_height > 0))
         throw std::invalid_argument("camera: orthographic window height must be > 0");
+    if (!(aperture >= 0)) throw std::invalid_argument("camera: aperture must be >= 0");
+    if (aperture > 0 && projection == Projection::orthographic)
+        throw std::invalid_argument("camera: a lens (aperture > 0) needs a perspective camera");
+    if (!(focus_distance >= 0)) throw std::invalid_argument("camera: focus distance must be >= 0");
+    if (!(shutter_open >= 0 && shutter_open <= shutter_close && shutter_close <= 1))
+        throw std::invalid_argument("camera: the shutter must open and close at times 0 <= open <= close <= 1");
 }
 
 View Camera::view(int nx, int ny) const {
@@ -37,10 +44,16 @@ View Camera::view(int nx, int ny) const {
         half_height = window_height / Real(2);
     }
     const Real half_width = half_height * aspect;
-    return View{projection, eye,
-                // Unit vectors first: the student's basis then never squares a huge or tiny one.
-                camera_basis(unit_vector(view_direction), unit_vector(up)),
-                Window{-half_width, half_width, -half_height, half_height}, focal_distance, nx, ny};
+    View v{projection, eye,
+           // Unit vectors first: the student's basis then never squares a huge or tiny one.
+           camera_basis(unit_vector(view_direction), unit_vector(up)),
+           Window{-half_width, half_width, -half_height, half_height}, focal_distance, nx, ny};
+    v.aperture = aperture;
+    v.focus = focus_distance > 0 ? focus_distance : glm::length(view_direction);
+    v.lens = lens;
+    v.shutter_open = shutter_open;
+    v.shutter_close = shutter_close;
+    return v;
 }
 
 }  // namespace rt

@@ -3,6 +3,8 @@
 // exercises; their reference bodies live in solutions/ch01_viewing_rays.cpp.
 #include "core/ray.hpp"
 
+#include <cstdint>
+
 namespace rt {
 
 enum class Projection { orthographic, perspective };
@@ -32,6 +34,26 @@ Ray orthographic_ray(const Vec3& eye, const Basis& uvw, const Vec2& uv);
 // image plane at distance d in front of the eye (w_s = -d).
 Ray perspective_ray(const Vec3& eye, const Basis& uvw, Real d, const Vec2& uv);
 
+// The shape of a thin lens (chapter 16): the course's square, or a round one.
+enum class LensShape : std::uint8_t { square, disk };
+
+// Exercise 16.1: a point of the lens from u in [0, 1)^2, in lens coordinates centred on the
+// lens's middle: [-1, 1]^2 for the square, the unit disk for the disk. Strata of u must stay
+// apart: neighbouring u give neighbouring points.
+Vec2 lens_point(const Vec2& u, LensShape shape);
+
+// Exercise 16.2: the thin-lens version of perspective_ray: the ray from the point `lens`
+// (lens coordinates, as lens_point makes them) of a lens of width `aperture` centred on the
+// eye, in the plane of u and v, through the point that the pinhole ray through window point
+// uv meets at distance `focus` in front of the eye (the plane -w . (p - eye) = focus). Every
+// such ray through one window point meets the pinhole ray there: that plane is in focus.
+Ray thin_lens_ray(const Vec3& eye, const Basis& uvw, Real d, const Vec2& uv, Real aperture, Real focus,
+                  const Vec2& lens);
+
+// Exercise 18.1: the time of a ray in stratum k of n equal strata of the shutter interval
+// [open, close), at the place u in [0, 1) inside its stratum.
+Real shutter_time(int k, int n, Real u, Real open, Real close);
+
 // Where one camera ray starts in each of its dimensions. A pinhole camera ignores the lens
 // position and a closed shutter the time, so chapters 01-05 pay nothing for them.
 struct CameraSample {
@@ -48,9 +70,21 @@ struct View {
     Window window;
     Real focal_distance;
     int nx, ny;
+    // Chapter 16: a lens of width `aperture` (0: a pinhole) focused at `focus` in front of the eye.
+    Real aperture = 0;
+    Real focus = 1;
+    LensShape lens = LensShape::square;
+    // Chapter 18: the shutter is open from `shutter_open` to `shutter_close` (times in [0, 1],
+    // when things that move are where they are at the start and the end of their motion).
+    Real shutter_open = 0, shutter_close = 1;
+
+    bool has_lens() const { return aperture > 0; }
 
     Ray ray(const CameraSample& sample) const;
-    Ray pixel_ray(int i, int j) const { return ray({Vec2(Real(i) + Real(0.5), Real(j) + Real(0.5))}); }
+    // Through the centre of pixel (i, j) and of the lens, at the shutter's opening.
+    Ray pixel_ray(int i, int j) const {
+        return ray({Vec2(Real(i) + Real(0.5), Real(j) + Real(0.5)), Vec2(0), shutter_open});
+    }
 };
 
 // A camera as a scene describes it, independent of the image size. The window keeps the
@@ -64,9 +98,14 @@ struct Camera {
     Real vertical_fov_degrees = 45;  // perspective only
     Real window_height = 2;          // orthographic only: t - b
     Real focal_distance = 1;         // perspective: distance to the image plane
+    Real aperture = 0;               // chapter 16: lens width, 0 = pinhole (perspective only)
+    Real focus_distance = 0;         // where the lens focuses, along the view; 0 = at the target
+    LensShape lens = LensShape::square;
+    Real shutter_open = 0, shutter_close = 1;  // chapter 18
 
     // Throws std::invalid_argument for a camera that cannot see: eye on the target, up along
-    // the view, a field of view or window outside its range.
+    // the view, a field of view or window outside its range, a lens on an orthographic camera,
+    // a shutter that closes before it opens.
     void validate() const;
     View view(int nx, int ny) const;
 };

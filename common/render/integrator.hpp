@@ -27,11 +27,14 @@ struct TraceContext {
     Color weight{1};                 // for the tree: the factor this ray's colour will get
     const char* weight_of = "";
     float reach = 1;  // the product of the weights from the pixel down to this ray
+    // When the camera ray was cast (chapter 18): every ray of its tree, shadow rays too,
+    // sees the scene at that time.
+    Real time = 0;
 
     // The context of a ray this one casts.
     TraceContext child(RayKind k, Interval iv, const Color& w, const char* why) const {
         const float share = std::max(w.r, std::max(w.g, w.b));
-        return TraceContext{sampler, counters, depth + 1, k, iv, tree, node, -1, w, why, reach * share};
+        return TraceContext{sampler, counters, depth + 1, k, iv, tree, node, -1, w, why, reach * share, time};
     }
 
     // Tree bookkeeping; each does nothing unless a tree is being recorded.

@@ -87,7 +87,7 @@ CameraSample camera_sample(int i, int j, int k, int spp, const Antialiasing& aa,
     const Vec2 corner{Real(i), Real(j)};
     if (spp == 1 && aa.pattern == PixelPattern::random && aa.filter == PixelFilter::box)
         return {corner + Vec2(Real(0.5))};
-    Vec2 u;
+    Vec2 u(0);
     switch (aa.pattern) {
         case PixelPattern::random:
             u = sampler.get2(Dimension::pixel);
@@ -103,9 +103,34 @@ CameraSample camera_sample(int i, int j, int k, int spp, const Antialiasing& aa,
     return {corner + Vec2(Real(0.5)) + Vec2(tent_offset(u.x), tent_offset(u.y))};
 }
 
+void lens_and_time(const View& view, bool moving, Sampler& sampler, CameraSample& sample) {
+    if (view.has_lens()) sample.lens = lens_point(sample_square(sampler, Dimension::lens), view.lens);
+    if (moving) {
+        const LineSample t = sample_line(sampler, Dimension::time);
+        sample.time = shutter_time(t.stratum, t.count, t.u, view.shutter_open, view.shutter_close);
+    } else {
+        sample.time = view.shutter_open;
+    }
+}
+
+Strata strata_of(const Antialiasing& aa, int spp) {
+    if (!pattern_side(spp)) return Strata::none;
+    switch (aa.pattern) {
+        case PixelPattern::regular:
+            return Strata::centres;
+        case PixelPattern::jittered:
+            return Strata::jittered;
+        default:
+            return Strata::none;
+    }
+}
+
 RenderResult render(const Scene& scene, const RenderOptions& o) {
     check(scene, o);
     const View view = scene.camera.view(o.width, o.height);
+    const bool moving = scene.surfaces.moves();
+    const Strata strata = strata_of(o.antialiasing, o.spp);
+    const int side = pattern_side(o.spp).value_or(0);
     const int tiles_x = (o.width + kTile - 1) / kTile;
     const int tiles_y = (o.height + kTile - 1) / kTile;
     const int tiles = tiles_x * tiles_y;
@@ -125,12 +150,16 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
             const int j = o.height - 1 - y;  // image rows go down, v goes up
             for (int i = x0; i < x1; ++i) {
                 Sampler sampler(o.seed, std::uint64_t(y) * std::uint64_t(o.width) + std::uint64_t(i));
+                sampler.set_strata(o.spp, side, strata);
                 Color sum(0);
                 for (int k = 0; k < o.spp; ++k) {
                     sampler.start_sample(k);
-                    const Ray ray = view.ray(camera_sample(i, j, k, o.spp, o.antialiasing, sampler));
+                    CameraSample cs = camera_sample(i, j, k, o.spp, o.antialiasing, sampler);
+                    lens_and_time(view, moving, sampler, cs);
+                    const Ray ray = view.ray(cs);
                     counters.count(RayKind::camera);
                     TraceContext context{sampler, counters};
+                    context.time = ray.time;
                     const Color L = integrator.Li(scene, ray, context);
                     // The image holds finite values whatever goes wrong upstream; --stats
                     // counts what was left out.
@@ -140,6 +169,7 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
                         ++counters.nonfinite_samples;
                 }
                 result.image.at(i, y) = sum / float(o.spp);
+                for (std::size_t d = 0; d < kDimensions; ++d) counters.draws[d] += sampler.draws()[d];
             }
         }
         counters.nodes_visited += traversal_tally.nodes;
@@ -200,6 +230,7 @@ Pick pick(const Scene& scene, const RenderOptions& o, int x, int y) {
     check(scene, o);
     check_pick(o, x, y);
     const View view = scene.camera.view(o.width, o.height);
+    // The pixel's centre ray through the middle of the lens, at the shutter's opening.
     Pick result{view.pixel_ray(x, o.height - 1 - y), std::nullopt, {}, Color(0)};
     HitRecord rec;
     if (scene.hit(result.ray, Interval{}, rec)) result.hit = rec;
@@ -207,6 +238,7 @@ Pick pick(const Scene& scene, const RenderOptions& o, int x, int y) {
     RayCounters counters;
     TraceContext context{sampler, counters};
     context.tree = &result.tree;
+    context.time = result.ray.time;
     result.color = scene.integrator->Li(scene, result.ray, context);
     return result;
 }

@@ -2,6 +2,7 @@
 #include "render/antialiasing.hpp"
 #include "render/image.hpp"
 #include "render/scene.hpp"
+#include "render/strata.hpp"
 
 #include <cstdint>
 #include <optional>
@@ -40,6 +41,15 @@ RenderResult render(const Scene& scene, const RenderOptions& options);
 // square spp: check_budget), and the filter turns that into a place on the film. Lens and
 // time stay at the pinhole and time 0 until a camera asks for them.
 CameraSample camera_sample(int i, int j, int k, int spp, const Antialiasing& aa, Sampler& sampler);
+
+// The rest of a camera sample (book §16, §18): a place on the lens when the camera has one,
+// and a time in the shutter interval when something in the scene moves; each drawn in its
+// own dimension, stratified and shuffled against the pixel's samples. Nothing is drawn for
+// what the scene does not need.
+void lens_and_time(const View& view, bool moving, Sampler& sampler, CameraSample& sample);
+
+// How the samples of a pixel divide every dimension: as the pixel pattern does.
+Strata strata_of(const Antialiasing& aa, int spp);
 
 // What the ray through the centre of image pixel (x, y) (y down from the top, as image
 // viewers count) sees: the picking use of ray tracing from the course's FAQ. The

@@ -1,14 +1,18 @@
 #include "render/whitted.hpp"
 
 #include "render/scene.hpp"
+#include "render/strata.hpp"
 #include "shading/optics.hpp"
 
 #include <algorithm>
 
 namespace rt {
 
-bool in_shadow(const Scene& scene, const SpawnedRay& s, int light, const Color& light_color, TraceContext& context) {
+bool in_shadow(const Scene& scene, const SpawnedRay& spawned, int light, const Color& light_color,
+               TraceContext& context) {
     context.counters.count(RayKind::shadow);
+    SpawnedRay s = spawned;
+    s.ray.time = context.time;  // what moves is where it is at the camera ray's time
     const bool blocked = scene.occluded(s.ray, s.interval);
     if (context.tree) {  // --pick: say what blocks it, which the any-hit query does not
         TraceContext shadow = context.child(RayKind::shadow, s.interval, light_color, "light colour");
@@ -42,7 +46,14 @@ Color WhittedIntegrator::Li(const Scene& scene, const Ray& ray, TraceContext& co
     const bool lit = sp.diffuse != Color(0) || m.has_specular();
     for (std::size_t k = 0; lit && k < scene.lights.size(); ++k) {
         ++context.counters.light_terms;
-        c += direct_light(scene, scene.lights[k], int(k), sp, context);
+        const Light& light = scene.lights[k];
+        // An area light (chapter 15) is a point light at one place on it per sample; a point
+        // light draws no sample at all.
+        if (light.is_area())
+            c += direct_light(scene, light.at(light_point(light, sample_square(context.sampler, Dimension::light))),
+                              int(k), sp, context);
+        else
+            c += direct_light(scene, light, int(k), sp, context);
     }
     if (m.is_dielectric() || m.has_mirror()) {
         if (context.depth >= scene.max_depth) {
@@ -51,8 +62,17 @@ Color WhittedIntegrator::Li(const Scene& scene, const Ray& ray, TraceContext& co
             c += dielectric(scene, ray, rec, m, context);
         } else {
             // The mirror direction about the shading normal (smooth meshes reflect smoothly).
-            c += trace(scene, ray, rec, reflect(ray.direction, sp.n), RayKind::reflection, m.mirror, "mirror colour",
-                       context);
+            Vec3 r = reflect(ray.direction, sp.n);
+            if (m.is_glossy()) {
+                // Chapter 17: moved across the glossy square. A ray that ends up below the
+                // surface brings nothing back (the energy it stood for is lost: book §17.3).
+                r = glossy_direction(unit_vector(r), Real(m.glossy), sample_square(context.sampler, Dimension::glossy));
+                if (!(glm::dot(r, sp.side) > 0)) {
+                    context.note("glossy direction below the surface: black");
+                    return context.close(c);
+                }
+            }
+            c += trace(scene, ray, rec, r, RayKind::reflection, m.mirror, "mirror colour", context);
         }
     }
     return context.close(c);

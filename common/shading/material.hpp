@@ -21,6 +21,10 @@ struct Material {
     // Chapter 07: c_s, how much of what the mirror direction sees is reflected (course §9.6).
     // Black = not a mirror, and no reflection ray is ever cast.
     Color mirror{0};
+    // Chapter 17: a glossy mirror blurs its reflection: each reflection ray leaves in the
+    // mirror direction moved across a square of this width (course §9.11.4). 0 = sharp, and
+    // no glossy sample is ever drawn.
+    float glossy = 0;
     // Chapter 08: a dielectric (glass, water) has an index of refraction; 0 = opaque, and no
     // refraction ray is ever cast. `attenuation` is Beer's law's a: the share of each
     // channel left after one unit of distance inside (course §9.7).
@@ -29,6 +33,7 @@ struct Material {
 
     bool has_specular() const { return specular != Color(0); }
     bool has_mirror() const { return mirror != Color(0); }
+    bool is_glossy() const { return glossy > 0; }
     bool is_dielectric() const { return ior > 0; }
     bool absorbs() const { return attenuation != Color(1); }
 

@@ -25,4 +25,9 @@ Real schlick(Real cosine, Real ior);
 // that leaves `attenuation` of it after one unit, attenuation^distance.
 Color beer(const Color& attenuation, Real distance);
 
+// Exercise 17.1: a glossy reflection direction (course §9.11.4): the unit mirror direction r
+// moved across a square of width `width` centred on it, square to r, to the place uv in
+// [0, 1)^2 of that square. Not unit length; it may point below the surface (the caller checks).
+Vec3 glossy_direction(const Vec3& r, Real width, const Vec2& uv);
+
 }  // namespace rt

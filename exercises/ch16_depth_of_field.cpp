@@ -1,0 +1,31 @@
+// STUDENT COPY of solutions/ch16_depth_of_field.cpp, made by tools/gen_exercises.cpp.
+// Write your code between each "@exercise" line and its "@end", in place of the throw.
+// Only those lines are yours: ./lab exercises keeps them and rewrites the rest.
+// Chapter 16 exercises: depth of field (book §16, course §9.11.3). Declared in
+// common/render/camera.hpp.
+#include "core/exercise.hpp"
+#include "render/camera.hpp"
+
+#include <cmath>
+#include <numbers>
+
+namespace rt {
+
+// @book lens-point
+Vec2 lens_point(const Vec2& u, LensShape shape) {
+    // @exercise 16.1 | lens_point | book §16.2
+    throw NotImplemented("exercise 16.1 (lens_point) is not done yet: see book §16.2");
+    // @end
+}
+// @book-end
+
+// @book thin-lens
+Ray thin_lens_ray(const Vec3& eye, const Basis& uvw, Real d, const Vec2& uv, Real aperture, Real focus,
+                  const Vec2& lens) {
+    // @exercise 16.2 | thin_lens_ray | book §16.1
+    throw NotImplemented("exercise 16.2 (thin_lens_ray) is not done yet: see book §16.1");
+    // @end
+}
+// @book-end
+
+}  // namespace rt

@@ -1,0 +1,21 @@
+// STUDENT COPY of solutions/ch17_glossy_reflection.cpp, made by tools/gen_exercises.cpp.
+// Write your code between each "@exercise" line and its "@end", in place of the throw.
+// Only those lines are yours: ./lab exercises keeps them and rewrites the rest.
+// Chapter 17 exercises: glossy reflection (book §17, course §9.11.4). Declared in
+// common/shading/optics.hpp.
+#include "core/exercise.hpp"
+#include "shading/optics.hpp"
+
+#include <cmath>
+
+namespace rt {
+
+// @book glossy
+Vec3 glossy_direction(const Vec3& r, Real width, const Vec2& uv) {
+    // @exercise 17.1 | glossy_direction | book §17.1
+    throw NotImplemented("exercise 17.1 (glossy_direction) is not done yet: see book §17.1");
+    // @end
+}
+// @book-end
+
+}  // namespace rt
