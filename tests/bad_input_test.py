@@ -195,6 +195,10 @@ scene("csg_operand_triangle", {S: dict(CSG, operands=[BALL, {"type": "triangle",
       S + "/operands/1", "a CSG operand must be a closed solid: a triangle has no inside")
 scene("csg_operand_terrain", {S: dict(CSG, operands=[BALL, {"type": "terrain", "center": [0, 0, 0], "size": 2, "height": 0.1, "cells": 4}])},
       S + "/operands/1", "the mesh is not closed")
+# A closed tetrahedron wound clockwise seen from outside: closed, but inside out.
+INSIDE_OUT = "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 3\nf 1 4 2\nf 1 3 4\nf 2 4 3\n"
+scene_text("csg_operand_inside_out", patched({S: dict(CSG, operands=[BALL, {"type": "mesh", "file": "inside_out.obj"}])}),
+           [S + "/operands/1", "the mesh is inside out"], files={"inside_out.obj": INSIDE_OUT})
 scene("csg_operand_bad_sphere", {S: dict(CSG, operands=[BALL, dict(BALL, radius=-1)])}, S + "/operands/1/radius", "length")
 scene("csg_operand_unknown_key", {S: dict(CSG, operands=[BALL, dict(BALL, colour=1)])}, "unknown key 'colour'")
 scene("csg_operand_unknown_material", {S: dict(CSG, operands=[BALL, dict(BALL, material="gold")])},

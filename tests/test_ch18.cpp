@@ -120,19 +120,3 @@ TEST_CASE("a moving ball's shadow: the floor is dark for the share of the time t
     for (int y = 0; y < 2; ++y)
         for (int x = 0; x < 2; ++x) CHECK(double(img.at(x, y).r) == doctest::Approx(want).epsilon(0.005));
 }
-
-TEST_CASE("--stats: nothing moving draws no time sample") {
-    const char* text = R"({"camera": {"eye": [0, 0, 3], "target": [0, 0, 0]},
-      "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1}]})";
-    Scene scene = load_scene_text(text, "still.json", ".");
-    scene.build_accel(AccelKind::fast);
-    CHECK_FALSE(scene.surfaces.moves());
-    RenderOptions o;
-    o.width = 8;
-    o.height = 6;
-    o.spp = 4;
-    const RenderResult r = render(scene, o);
-    CHECK(r.counters.draws[std::size_t(Dimension::time)] == 0);
-    CHECK(r.counters.draws[std::size_t(Dimension::lens)] == 0);
-    CHECK(r.counters.draws[std::size_t(Dimension::light)] == 0);
-}

@@ -5,6 +5,7 @@
 #include "geometry/procedural.hpp"
 #include "geometry/shape.hpp"
 #include "io/scene_file.hpp"
+#include "render/render.hpp"
 #include "support.hpp"
 #include "support/span_check.hpp"
 #include "ztest.hpp"
@@ -62,8 +63,8 @@ TEST_CASE("operands that are not closed solids are refused, naming them") {
         FAIL("expected a SceneError");
     } catch (const SceneError& e) {
         const std::string what = e.what();
-        CHECK(what.find("lid.json:4:4: /surfaces/0/operands/1: a CSG operand must be a closed solid: a polygon has "
-                        "no inside") == 0);
+        CHECK(what.find("lid.json:4:4: /surfaces/0/operands/1: a CSG operand must be a closed solid: 'lid': a "
+                        "polygon has no inside") == 0);
         CHECK(what.find('\n') == std::string::npos);
     }
 }
@@ -94,4 +95,37 @@ TEST_CASE("the statistical test: Sidak's level, the z-test's p, and a verdict on
     v = stat::compare(renders, ref, 0.01, 0.001, 0);
     CHECK(v.failed == 2);
     CHECK_FALSE(v.pass());
+}
+
+// Chapters 16 and 18: what needs none of their exercises (the stubs must fail every test of
+// a chapter's own program).
+TEST_CASE("scene files: a lens needs a perspective camera and an aperture") {
+    CHECK_THROWS_WITH(load_scene_text(R"({"camera": {"projection": "orthographic", "eye": [0, 0, 3],
+        "target": [0, 0, 0], "aperture": 0.2}, "surfaces": []})",
+                                      "o.json", "."),
+                      doctest::Contains("a lens (aperture > 0) needs a perspective camera"));
+    CHECK_THROWS_WITH(load_scene_text(R"({"camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "lens": "disk"},
+        "surfaces": []})",
+                                      "l.json", "."),
+                      doctest::Contains("a lens needs an aperture > 0"));
+    CHECK_THROWS_WITH(load_scene_text(R"({"camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "aperture": 1,
+        "lens": "hexagon"}, "surfaces": []})",
+                                      "h.json", "."),
+                      doctest::Contains("must be \"square\" or \"disk\""));
+}
+
+TEST_CASE("--stats: nothing moving draws no time sample") {
+    const char* text = R"({"camera": {"eye": [0, 0, 3], "target": [0, 0, 0]},
+      "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1}]})";
+    Scene scene = load_scene_text(text, "still.json", ".");
+    scene.build_accel(AccelKind::fast);
+    CHECK_FALSE(scene.surfaces.moves());
+    RenderOptions o;
+    o.width = 8;
+    o.height = 6;
+    o.spp = 4;
+    const RenderResult r = render(scene, o);
+    CHECK(r.counters.draws[std::size_t(Dimension::time)] == 0);
+    CHECK(r.counters.draws[std::size_t(Dimension::lens)] == 0);
+    CHECK(r.counters.draws[std::size_t(Dimension::light)] == 0);
 }

@@ -247,9 +247,11 @@ std::string ray_tree_svg(const Scene& scene, const RayTree& tree, const std::str
         std::string tip = std::string(kRayKindNames[std::size_t(n.kind)]) + " ray, depth " + std::to_string(n.depth);
         if (n.kind == RayKind::shadow)
             tip += ", to light " + std::to_string(n.light) + (n.hit ? ": BLOCKED" : ": reaches the light");
-        else if (n.hit)
+        else if (n.hit) {
             tip += ", hits " + scene.surfaces.name(n.record.surface) + " at t = " + num(double(n.record.t));
-        else
+            if (n.record.part != kNone)  // which operand of a CSG object
+                tip += " (" + describe_part(scene.surfaces[n.record.surface].shape, n.record.part) + ")";
+        } else
             tip += ", hits nothing: background";
         if (*n.weight_of) {
             tip += "\nweight (";

@@ -137,12 +137,31 @@ SpanList csg_spans(const Csg& csg, const Ray& ray) {
 
 }  // namespace
 
+// Six times the volume a closed mesh encloses, positive when its triangles wind counter-
+// clockwise seen from outside (the divergence theorem: a sum of signed tetrahedra from one
+// point, here the first vertex, which keeps the products small).
+double signed_volume6(const MeshData& mesh) {
+    const glm::dvec3 o(mesh.positions.front());
+    double sum = 0;
+    for (const auto& t : mesh.triangles) {
+        const glm::dvec3 a = glm::dvec3(mesh.positions[t[0]]) - o, b = glm::dvec3(mesh.positions[t[1]]) - o,
+                         c = glm::dvec3(mesh.positions[t[2]]) - o;
+        sum += glm::dot(a, glm::cross(b, c));
+    }
+    return sum;
+}
+
 std::string not_solid(const Shape& shape) {
     if (std::holds_alternative<Triangle>(shape)) return "a triangle has no inside";
     if (std::holds_alternative<Polygon>(shape)) return "a polygon has no inside";
-    if (const auto* m = std::get_if<Mesh>(&shape))
-        return closed(m->data()) ? ""
-                                 : "the mesh is not closed (an edge without exactly one partner running the other way)";
+    if (const auto* m = std::get_if<Mesh>(&shape)) {
+        if (!closed(m->data()))
+            return "the mesh is not closed (an edge without exactly one partner running the other way)";
+        // Its spans would come out reversed (every entry an exit): it would vanish from the result.
+        if (!(signed_volume6(m->data()) > 0))
+            return "the mesh is inside out (its triangles wind clockwise seen from outside: no volume inside)";
+        return "";
+    }
     if (const auto* in = std::get_if<Instance>(&shape)) return not_solid(in->base());
     return "";
 }

@@ -170,7 +170,10 @@ CsgOperand read_operand(const Loader& loader, const Fields& f) {
         base = std::make_shared<const Shape>(read_shape(loader, f, {"name", "material", "transform"}));
     }
     const std::string why = not_solid(*base);
-    if (!why.empty()) f.fail("", "a CSG operand must be a closed solid: " + why);
+    if (!why.empty()) {
+        const std::string name = f.text("name", "");
+        f.fail("", "a CSG operand must be a closed solid: " + (name.empty() ? "" : "'" + name + "': ") + why);
+    }
     CsgOperand operand{transformed(f, base), kNone, f.text("name", "")};
     if (f.has("material")) operand.material = loader.material(f);
     return operand;
