@@ -287,6 +287,23 @@ TEST_CASE("the lens: both hit distances of an axial ray, and its focus against t
     const Real focus_z = rec.p.z + to_axis * out_dir.z;
     CHECK(out_dir.y < 0);  // bent towards the axis
     CHECK(std::abs((-face - focus_z) - bfd) < Real(2e-3) * bfd);
+
+    // Unequal radii, so that mixing them up fails: a sphere of radius R1 = 3 centred at
+    // z = -2.5 (its surface at z = 0.5 on the axis) and one of R2 = 1.5 centred at z = 1 (at
+    // z = -0.5): the axial ray enters at z = 0.5 and leaves at z = -0.5; a ray parallel to
+    // the axis at height 0.6 meets the faces where z = -2.5 + sqrt(9 - 0.36) and
+    // z = 1 - sqrt(2.25 - 0.36).
+    const Shape uneven = Csg(CsgOp::intersection, CsgOperand{share(Sphere(Vec3(0, 0, Real(-2.5)), 3))},
+                             CsgOperand{share(Sphere(Vec3(0, 0, 1), Real(1.5)))});
+    SpanList u;
+    spans(uneven, axial, u);
+    REQUIRE(u.size() == 1);
+    CHECK(std::abs(u[0].in.t - Real(9.5)) <= 16 * kEps * 10);
+    CHECK(std::abs(u[0].out.t - Real(10.5)) <= 16 * kEps * 10);
+    spans(uneven, Ray{Vec3(0, Real(0.6), 10), Vec3(0, 0, -1)}, u);
+    REQUIRE(u.size() == 1);
+    CHECK(std::abs(u[0].in.t - (10 - (std::sqrt(Real(8.64)) - Real(2.5)))) <= 64 * kEps * 10);
+    CHECK(std::abs(u[0].out.t - (10 - (1 - std::sqrt(Real(1.89))))) <= 64 * kEps * 10);
 }
 
 TEST_CASE("bounding boxes: union, intersection, difference; and every hit inside its box") {
