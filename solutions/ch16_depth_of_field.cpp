@@ -36,13 +36,13 @@ Ray thin_lens_ray(const Vec3& eye, const Basis& uvw, Real d, const Vec2& uv, Rea
                   const Vec2& lens) {
     // @exercise 16.2 | thin_lens_ray | book §16.1
     // The pinhole ray's direction reaches the image plane (distance d) at parameter 1, so the
-    // plane in focus at parameter focus / d.
+    // plane in focus at parameter focus / d, at eye + (focus / d) pinhole. From the lens point
+    // eye + offset, the direction towards it, scaled by d / focus so that it keeps the pinhole
+    // direction's length: pinhole - (d / focus) offset. Written from the eye, not as the
+    // difference of two far-away points, it keeps its precision anywhere in the scene.
     const Vec3 pinhole = -d * uvw.w + uv.x * uvw.u + uv.y * uvw.v;
-    const Vec3 sharp = eye + (focus / d) * pinhole;
-    const Vec3 origin = eye + (aperture / 2) * (lens.x * uvw.u + lens.y * uvw.v);
-    // Scaled back by d / focus: the same length as the pinhole's direction for a point
-    // lens, so t keeps its meaning.
-    return Ray{origin, (d / focus) * (sharp - origin)};
+    const Vec3 offset = (aperture / 2) * (lens.x * uvw.u + lens.y * uvw.v);
+    return Ray{eye + offset, pinhole - (d / focus) * offset};
     // @end
 }
 // @book-end

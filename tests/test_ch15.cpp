@@ -6,6 +6,7 @@
 #include "render/render.hpp"
 #include "render/strata.hpp"
 #include "support.hpp"
+#include "support/small_render.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -28,7 +29,7 @@ TEST_CASE("15.1 fisher_yates: a permutation, and every order equally often") {
     }
     // The 6 orders of 3 items over 60,000 shuffles: each 10,000 +- 91 (one standard
     // deviation); 500 is 5.5 of them. A shuffle that swaps with any item (not only 0..i)
-    // makes some orders 1.3 times as likely as others, and fails.
+    // makes some orders twice as likely as others, and fails.
     std::map<std::vector<std::uint32_t>, int> seen;
     for (int k = 0; k < 60000; ++k) {
         std::vector<std::uint32_t> order{0, 1, 2};
@@ -125,8 +126,7 @@ double seen_share(const Scene& scene, const Vec3& p, int samples, std::uint64_t 
 }  // namespace
 
 TEST_CASE("the share of a light seen past an edge: analytic, across the penumbra") {
-    Scene scene = load_scene_text(kEdgeScene, "edge.json", ".");
-    scene.build_accel(AccelKind::none);
+    Scene scene = rt::test::scene_text(kEdgeScene, AccelKind::none);
     std::uint64_t pixel = 0;
     for (double x : {-0.7, -0.45, -0.2, 0.0, 0.1, 0.3, 0.48, 0.6}) {
         CAPTURE(x);
@@ -147,14 +147,8 @@ TEST_CASE("a soft shadow on the floor: the pixel's brightness follows the share 
                    "window_height": 2}, )");
     text.replace(text.find("\"surfaces\": ["), 13,
                  R"("surfaces": [{"type": "polygon", "vertices": [[-9, 0, -9], [-9, 0, 9], [9, 0, 9], [9, 0, -9]]}, )");
-    Scene scene = load_scene_text(text, "edge-floor.json", ".");
-    scene.build_accel(AccelKind::fast);
-    RenderOptions o;
-    o.width = 2;
-    o.height = 48;
-    o.spp = 256;
-    o.threads = 2;
-    o.antialiasing = {PixelPattern::jittered, PixelFilter::box};
+    Scene scene = rt::test::scene_text(text);
+    const RenderOptions o = rt::test::jittered(2, 48, 256);
     const Image img = render(scene, o).image;
     const View view = scene.camera.view(o.width, o.height);
     int floor_pixels = 0, failures = 0;
@@ -176,13 +170,8 @@ TEST_CASE("a soft shadow on the floor: the pixel's brightness follows the share 
 }
 
 TEST_CASE("--stats: a point light draws no light sample; a parallelogram one per shading point") {
-    Scene scene = load_scene_text(kEdgeScene, "edge.json", ".");
-    scene.build_accel(AccelKind::fast);
-    RenderOptions o;
-    o.width = 8;
-    o.height = 6;
-    o.spp = 4;
-    o.antialiasing = {PixelPattern::jittered, PixelFilter::box};
+    Scene scene = rt::test::scene_text(kEdgeScene);
+    const RenderOptions o = rt::test::jittered(8, 6, 4);
     const RenderResult area = render(scene, o);
     CHECK(area.counters.draws[std::size_t(Dimension::light)] > 0);
     CHECK(area.counters.draws[std::size_t(Dimension::lens)] == 0);

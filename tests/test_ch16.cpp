@@ -5,6 +5,7 @@
 #include "io/scene_file.hpp"
 #include "render/render.hpp"
 #include "support.hpp"
+#include "support/small_render.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -101,14 +102,8 @@ TEST_CASE("an edge twice as far as the plane in focus: the ramp the thin-lens fo
       "materials": {"white": {"diffuse": [1, 1, 1]}},
       "surfaces": [{"type": "polygon", "vertices": [[-50, -50, -10], [0, -50, -10], [0, 50, -10], [-50, 50, -10]],
                     "material": "white"}]})";
-    Scene scene = load_scene_text(text, "edge.json", ".");
-    scene.build_accel(AccelKind::none);
-    RenderOptions o;
-    o.width = 100;
-    o.height = 2;
-    o.spp = 1024;
-    o.threads = 2;
-    o.antialiasing = {PixelPattern::jittered, PixelFilter::box};
+    Scene scene = rt::test::scene_text(text, AccelKind::none);
+    const RenderOptions o = rt::test::jittered(100, 2, 1024);
     const Image img = render(scene, o).image;
     const View view = scene.camera.view(o.width, o.height);
     int failures = 0;
@@ -123,8 +118,7 @@ TEST_CASE("an edge twice as far as the plane in focus: the ramp the thin-lens fo
     // The same edge on the plane in focus is sharp: one pixel between black and white.
     std::string sharp = text;
     sharp.replace(sharp.find("\"focus_distance\": 5"), 19, "\"focus_distance\": 10");
-    Scene focused = load_scene_text(sharp, "sharp.json", ".");
-    focused.build_accel(AccelKind::none);
+    Scene focused = rt::test::scene_text(sharp, AccelKind::none);
     const Image crisp = render(focused, o).image;
     int between = 0;
     for (int i = 0; i < o.width; ++i) between += crisp.at(i, 0).r > 0.01f && crisp.at(i, 0).r < 0.99f;
@@ -134,8 +128,7 @@ TEST_CASE("an edge twice as far as the plane in focus: the ramp the thin-lens fo
 TEST_CASE("--stats: no lens sample without an aperture; one per camera ray with one") {
     const char* text = R"({"camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "aperture": 0.2},
       "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1}]})";
-    Scene scene = load_scene_text(text, "lens.json", ".");
-    scene.build_accel(AccelKind::fast);
+    Scene scene = rt::test::scene_text(text);
     RenderOptions o;
     o.width = 8;
     o.height = 6;

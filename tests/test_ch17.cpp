@@ -6,6 +6,7 @@
 #include "render/render.hpp"
 #include "shading/optics.hpp"
 #include "support.hpp"
+#include "support/small_render.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -78,13 +79,8 @@ TEST_CASE("a glossy mirror at a grazing angle loses the light of the directions 
       "materials": {"floor": {"diffuse": [0, 0, 0], "mirror": [1, 1, 1], "glossy": 0.4}},
       "surfaces": [{"type": "polygon", "vertices": [[-50, 0, -50], [-50, 0, 50], [50, 0, 50], [50, 0, -50]],
                     "material": "floor"}]})";
-    Scene scene = load_scene_text(text, "grazing.json", ".");
-    scene.build_accel(AccelKind::fast);
-    RenderOptions o;
-    o.width = 4;
-    o.height = 4;
-    o.spp = 1024;
-    o.antialiasing = {PixelPattern::jittered, PixelFilter::box};
+    Scene scene = rt::test::scene_text(text);
+    const RenderOptions o = rt::test::jittered(4, 4, 1024);
     const RenderResult r = render(scene, o);
     const double want = 0.5 + std::tan(t) / 0.4;  // 0.719
     for (int y = 1; y < 3; ++y)                   // rows that see the floor (the window straddles it)

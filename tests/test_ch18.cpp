@@ -1,11 +1,13 @@
 // Chapter 18: motion blur (course §9.11.5). Shutter times on worked values and in their
 // strata; the swept box of a moving sphere holds it at every time; every search structure
 // returns brute force's hit for rays at random times; a ray crossed by a moving ball sees it
-// for the share of the exposure the geometry predicts; nothing moving draws no time.
+// for the share of the exposure the geometry predicts, and so does a floor point its shadow
+// crosses. (That nothing moving draws no time is tested in test_library_parts.cpp.)
 #include "io/scene_file.hpp"
 #include "render/render.hpp"
 #include "support.hpp"
 #include "support/accel_check.hpp"
+#include "support/small_render.hpp"
 
 #include <cmath>
 #include <set>
@@ -77,12 +79,8 @@ TEST_CASE("a ball crossing a ray: seen for the share of the exposure its chord p
         "window_height": 0.001, "shutter": [0.25, 0.5]}, "ambient": [1, 1, 1], "background": [0, 0, 0],
       "materials": {"white": {"diffuse": [1, 1, 1]}},
       "surfaces": [{"type": "sphere", "center": [-3, 0, 0], "radius": 1, "moves_to": [3, 0, 0], "material": "white"}]})";
-    Scene scene = load_scene_text(text, "crossing.json", ".");
-    scene.build_accel(AccelKind::fast);
-    RenderOptions o;
-    o.width = o.height = 2;
-    o.spp = 4096;
-    o.antialiasing = {PixelPattern::jittered, PixelFilter::box};
+    Scene scene = rt::test::scene_text(text);
+    const RenderOptions o = rt::test::jittered(2, 2, 4096);
     const RenderResult r = render(scene, o);
     for (int y = 0; y < 2; ++y)
         for (int x = 0; x < 2; ++x) CHECK(double(r.image.at(x, y).r) == doctest::Approx(2.0 / 3).epsilon(0.005));
@@ -108,12 +106,8 @@ TEST_CASE("a moving ball's shadow: the floor is dark for the share of the time t
       "lights": [{"type": "directional", "direction": [1, -1, 0], "color": [0.8, 0.8, 0.8]}],
       "surfaces": [{"type": "polygon", "vertices": [[-9, 0, -9], [-9, 0, 9], [9, 0, 9], [9, 0, -9]], "material": "white"},
                    {"type": "sphere", "center": [-3, 2, 0], "radius": 1, "moves_to": [3, 2, 0], "material": "white"}]})";
-    Scene scene = load_scene_text(text, "shadow.json", ".");
-    scene.build_accel(AccelKind::fast);
-    RenderOptions o;
-    o.width = o.height = 2;
-    o.spp = 4096;
-    o.antialiasing = {PixelPattern::jittered, PixelFilter::box};
+    Scene scene = rt::test::scene_text(text);
+    const RenderOptions o = rt::test::jittered(2, 2, 4096);
     const double t0 = (4.5 - 2 - std::sqrt(2.0) + 3) / 6;
     const double want = 0.1 + 0.8 / std::sqrt(2.0) * t0;  // 0.4852
     const Image img = render(scene, o).image;

@@ -181,3 +181,22 @@ TEST_CASE("two boxes sharing a face: one solid in a union, closed by the thin to
     }
     CHECK(one_span == 200);
 }
+
+TEST_CASE("Sampler: only a sample's first point in a dimension takes its stratum") {
+    // A second glossy bounce or a second area light in the same sample gets an independent
+    // point: one tied to the first stratum would bias a path that depends on both.
+    Sampler s(4, 2);
+    s.set_strata(16, 4, Strata::jittered);
+    s.start_sample(3);
+    CHECK(s.take_stratum(Dimension::glossy));
+    CHECK_FALSE(s.take_stratum(Dimension::glossy));
+    CHECK_FALSE(s.take_stratum(Dimension::glossy));
+    CHECK(s.take_stratum(Dimension::light));  // each dimension its own
+    s.start_sample(4);
+    CHECK(s.take_stratum(Dimension::glossy));  // and each sample
+    Sampler plain(4, 2);
+    plain.set_strata(10, 0, Strata::jittered);  // 10 is not a square: no strata at all
+    CHECK(plain.strata() == Strata::none);
+    plain.start_sample(0);
+    CHECK_FALSE(plain.take_stratum(Dimension::lens));
+}

@@ -9,7 +9,7 @@ namespace rt {
 struct Ray {
     Vec3 origin;     // e
     Vec3 direction;  // d, any non-zero length
-    Real time = 0;   // when the ray is cast, in [0, 1) of the shutter interval (motion blur)
+    Real time = 0;   // when the ray is cast, on the clock things move by (motion blur): in [open, close) of the shutter
 
     Vec3 at(Real t) const { return origin + t * direction; }
 };

@@ -48,7 +48,10 @@ public:
     Strata strata() const { return strata_; }
 
     // Starts sample `index` of this pixel's samples (0, 1, ..., count - 1).
-    void start_sample(int index) { sample_ = index; }
+    void start_sample(int index) {
+        sample_ = index;
+        used_ = {};
+    }
     int sample_index() const { return sample_; }
 
     // Uniform in [0, 1), from dimension d's own stream.
@@ -75,6 +78,16 @@ public:
         return int(order[std::size_t(sample_)]);
     }
 
+    // True for the current sample's first request of a stratified point in dimension d, and
+    // false after: only that one takes the sample's stratum. A second request in the same
+    // sample (a second glossy bounce, a second area light) that took the same stratum would
+    // be tied to the first, and where the two multiply along a path the average is biased.
+    bool take_stratum(Dimension d) {
+        const bool first = !used_[std::size_t(d)];
+        used_[std::size_t(d)] = true;
+        return strata_ != Strata::none && first;
+    }
+
     // How many numbers each dimension has drawn (--stats: what a scene's effects cost).
     const std::array<std::uint64_t, kDimensions>& draws() const { return draws_; }
 
@@ -95,6 +108,7 @@ private:
     std::array<pcg32, kDimensions> streams_;
     std::array<std::vector<std::uint32_t>, kDimensions> orders_;
     std::array<std::uint64_t, kDimensions> draws_{};
+    std::array<bool, kDimensions> used_{};  // a stratified point taken in this sample
     int sample_ = 0;
     int count_ = 1;
     int side_ = 1;

@@ -58,8 +58,8 @@ Real shutter_time(int k, int n, Real u, Real open, Real close);
 // position and a closed shutter the time, so chapters 01-05 pay nothing for them.
 struct CameraSample {
     Vec2 film;      // continuous image position, (i + 0.5, j + 0.5) at the centre of pixel (i, j)
-    Vec2 lens{0};   // on the lens disk, in [-1, 1]^2 (depth of field)
-    Real time = 0;  // in [0, 1) of the shutter interval (motion blur)
+    Vec2 lens{0};   // on the lens, in lens coordinates: [-1, 1]^2 or the unit disk (depth of field)
+    Real time = 0;  // in [open, close) of the shutter interval, on the motion's clock (motion blur)
 };
 
 // A camera fixed to one image size: what the render loop asks for rays.

@@ -5,6 +5,7 @@
 namespace rt {
 
 Vec2 sample_square(Sampler& sampler, Dimension d) {
+    if (!sampler.take_stratum(d)) return sampler.get2(d);  // random, or not the sample's first
     switch (sampler.strata()) {
         case Strata::none:
             break;
@@ -19,6 +20,7 @@ Vec2 sample_square(Sampler& sampler, Dimension d) {
 }
 
 LineSample sample_line(Sampler& sampler, Dimension d) {
+    if (!sampler.take_stratum(d)) return {0, 1, sampler.get1(d)};
     switch (sampler.strata()) {
         case Strata::none:
             break;

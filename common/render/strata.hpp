@@ -8,7 +8,10 @@
 namespace rt {
 
 // A point of the unit square [0, 1)^2 for the current sample, in dimension d: the sample's
-// stratum of the side x side grid (exercise 14.1 places it there).
+// stratum of the side x side grid (exercise 14.1 places it there). Only the sample's first
+// point in a dimension is stratified; any later one (a second glossy bounce, a second area
+// light) is uniform and independent, since one tied to the first would bias a path that
+// depends on both.
 Vec2 sample_square(Sampler& sampler, Dimension d);
 
 // The current sample's stratum of `count` on a line in dimension d, and where in it: the
