@@ -175,8 +175,9 @@ TEST_CASE("two boxes sharing a face: one solid in a union, closed by the thin to
         CHECK(s.size() >= 1);
         one_span += s.size() == 1;
         if (s.size() == 1) {
-            CHECK(s[0].in.t == doctest::Approx(4).epsilon(1e-6));
-            CHECK(s[0].out.t == doctest::Approx(6).epsilon(1e-6));
+            // To the rounding of coordinates near (300, -200, 100), where the boxes went and came back.
+            CHECK(std::abs(s[0].in.t - 4) <= 64 * rt::test::kEps * 400);
+            CHECK(std::abs(s[0].out.t - 6) <= 64 * rt::test::kEps * 400);
         }
     }
     CHECK(one_span == 200);
