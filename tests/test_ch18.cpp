@@ -114,3 +114,23 @@ TEST_CASE("a moving ball's shadow: the floor is dark for the share of the time t
     for (int y = 0; y < 2; ++y)
         for (int x = 0; x < 2; ++x) CHECK(double(img.at(x, y).r) == doctest::Approx(want).epsilon(0.005));
 }
+
+TEST_CASE("a reflection ray sees the scene at the camera ray's time") {
+    // An orthographic camera looks down -z at a mirror through the origin with normal
+    // (1, 0, 1) / sqrt(2): the reflection leaves along +x. A white ball of radius 0.5 moves
+    // along z at x = 3, from z = -3 at time 0 to z = 3 at time 1: it is on the reflected ray
+    // at time 0.5 (|z| < 0.5 for t in (5/12, 7/12)), and far from it at time 0.1. With the
+    // shutter an instant, the pixel is the ball's white or the black background, whatever time
+    // the reflection ray would have had on its own.
+    const char* text = R"({"camera": {"projection": "orthographic", "eye": [0, 0, 5], "target": [0, 0, 0],
+        "window_height": 0.001, "shutter": [0.5, 0.5]}, "shading": "whitted", "ambient": [1, 1, 1],
+      "background": [0, 0, 0],
+      "materials": {"mirror": {"diffuse": [0, 0, 0], "mirror": [1, 1, 1]}, "white": {"diffuse": [1, 1, 1]}},
+      "surfaces": [{"type": "polygon", "vertices": [[-1, -1, 1], [1, -1, -1], [1, 1, -1], [-1, 1, 1]], "material": "mirror"},
+                   {"type": "sphere", "center": [3, 0, -3], "radius": 0.5, "moves_to": [3, 0, 3], "material": "white"}]})";
+    Scene scene = rt::test::scene_text(text);
+    const RenderOptions o = rt::test::jittered(2, 2, 4);
+    CHECK(double(render(scene, o).image.at(0, 0).r) == doctest::Approx(1));
+    scene.camera.shutter_open = scene.camera.shutter_close = Real(0.1);
+    CHECK(double(render(scene, o).image.at(0, 0).r) == doctest::Approx(0));
+}

@@ -1,7 +1,7 @@
 #pragma once
 // A surface (course §9.4.1) binds a shape to what it is made of. The shape is geometry
-// only; the surface adds the material, and later chapters add a transform (instancing) or
-// a motion (motion blur) the same way, without touching the shapes.
+// only; the surface adds the material. Instancing (chapter 09) wraps a shape in a transform
+// without touching it; motion blur (chapter 18) is a sphere's own `motion`.
 #include "geometry/shape.hpp"
 
 namespace rt {

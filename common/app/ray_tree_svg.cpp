@@ -84,12 +84,16 @@ std::string polygon(const std::vector<P2>& pts, const char* style) {
 }
 
 // The outlines of one shape, seen through `to_world`.
-void draw_shape(const Shape& shape, const Affine& to_world, const PageProjection& proj, double unit, std::string& out) {
+// A moving sphere is drawn where it is at `time`, the time of the tree's rays.
+void draw_shape(const Shape& shape, const Affine& to_world, const PageProjection& proj, double unit, Real time,
+                std::string& out) {
     const std::string fill_style =
         "fill=\"#d9dde3\" fill-opacity=\"0.55\" stroke=\"#6b7280\" stroke-width=\"" + num(unit) + "\"";
     const char* kFill = fill_style.c_str();
     constexpr std::size_t kMaxTriangles = 3000;  // past this, a mesh is drawn as the hull of its vertices
-    if (const auto* s = std::get_if<Sphere>(&shape)) {
+    if (const auto* moving = std::get_if<Sphere>(&shape)) {
+        const Sphere at = moving->at(time);
+        const Sphere* s = &at;
         std::vector<P2> pts;  // the silhouette of a (transformed) sphere: the hull of points on it
         for (int i = 0; i <= 16; ++i)
             for (int j = 0; j < 32; ++j) {
@@ -122,7 +126,7 @@ void draw_shape(const Shape& shape, const Affine& to_world, const PageProjection
         }
         out += "\"/>\n";
     } else if (const auto* in = std::get_if<Instance>(&shape)) {
-        draw_shape(in->base(), in->to_world().then(to_world), proj, unit, out);
+        draw_shape(in->base(), in->to_world().then(to_world), proj, unit, time, out);
     } else if (const auto* box = std::get_if<Cuboid>(&shape)) {
         std::vector<P2> pts;  // the silhouette of a (transformed) box: the hull of its corners
         for (int k = 0; k < 8; ++k)
@@ -130,8 +134,8 @@ void draw_shape(const Shape& shape, const Affine& to_world, const PageProjection
                                                    k & 4 ? box->max.z : box->min.z))));
         out += polygon(hull(pts), kFill);
     } else if (const auto* csg = std::get_if<Csg>(&shape)) {  // both operands, as outlines
-        draw_shape(*csg->left().shape, to_world, proj, unit, out);
-        draw_shape(*csg->right().shape, to_world, proj, unit, out);
+        draw_shape(*csg->left().shape, to_world, proj, unit, time, out);
+        draw_shape(*csg->right().shape, to_world, proj, unit, time, out);
     }
 }
 
@@ -213,7 +217,8 @@ std::string ray_tree_svg(const Scene& scene, const RayTree& tree, const std::str
         lx += 80 * unit;
     }
 
-    for (const Surface& s : scene.surfaces.surfaces()) draw_shape(s.shape, Affine{}, proj, unit, out);
+    const Real time = tree.nodes.empty() ? 0 : tree.nodes.front().ray.time;
+    for (const Surface& s : scene.surfaces.surfaces()) draw_shape(s.shape, Affine{}, proj, unit, time, out);
     // Point lights as suns. Directional lights have no place to be drawn: their shadow rays
     // leave the picture towards them.
     for (std::size_t k = 0; k < scene.lights.size(); ++k) {

@@ -32,7 +32,7 @@ inline constexpr Range recursion_depth{"recursion depth", 0, 64, "", "/propertie
 inline constexpr Range angle{"angle", -3600, 3600, "degrees", "/$defs/transform_step/properties/degrees"};
 inline constexpr Range field_of_view{"field of view", 1e-3, 179.9, "degrees", "/$defs/camera/properties/fov"};
 inline constexpr Range aperture{"aperture", 0, 1e8, "", "/$defs/camera/properties/aperture"};
-inline constexpr Range shutter_time{"shutter time", 0, 1, "", "/$defs/camera/properties/shutter/items"};
+inline constexpr Range shutter{"shutter time", 0, 1, "", "/$defs/camera/properties/shutter/items"};
 inline constexpr Range glossy_width{"glossy width", 0, 16, "", "/$defs/material/properties/glossy"};
 // Counts in a scene file.
 inline constexpr Range triangle_vertices{"triangle vertices", 3, 3, "", "/$defs/surface/oneOf/1/properties/vertices"};
@@ -73,7 +73,7 @@ inline constexpr Range all[] = {coordinate,
                                 angle,
                                 field_of_view,
                                 aperture,
-                                shutter_time,
+                                shutter,
                                 glossy_width,
                                 triangle_vertices,
                                 polygon_vertices,

@@ -49,7 +49,7 @@ Camera read_camera(const Fields& f) {
         const auto at = [&](std::size_t k) {
             if (!v[k].is_number()) f.fail("shutter", "must be [open, close], two times in [0, 1]");
             const double x = v[k].get<double>();
-            if (!limits::contains(limits::shutter_time, x)) f.fail("shutter", limits::refuse(limits::shutter_time, x));
+            if (!limits::contains(limits::shutter, x)) f.fail("shutter", limits::refuse(limits::shutter, x));
             return Real(x);
         };
         cam.shutter_open = at(0);

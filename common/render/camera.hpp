@@ -47,15 +47,18 @@ Vec2 lens_point(const Vec2& u, LensShape shape);
 // eye, in the plane of u and v, through the point that the pinhole ray through window point
 // uv meets at distance `focus` in front of the eye (the plane -w . (p - eye) = focus). Every
 // such ray through one window point meets the pinhole ray there: that plane is in focus.
+// Its direction is scaled as the pinhole ray's is: it reaches that point at t = focus / d,
+// as the pinhole ray does (a lens point of (0, 0) gives the pinhole ray itself).
 Ray thin_lens_ray(const Vec3& eye, const Basis& uvw, Real d, const Vec2& uv, Real aperture, Real focus,
                   const Vec2& lens);
 
 // Exercise 18.1: the time of a ray in stratum k of n equal strata of the shutter interval
-// [open, close), at the place u in [0, 1) inside its stratum.
+// [open, close), at the place u in [0, 1) inside its stratum. Always below close (rounding
+// must not push it there), except for an instant shutter, open == close: then open.
 Real shutter_time(int k, int n, Real u, Real open, Real close);
 
 // Where one camera ray starts in each of its dimensions. A pinhole camera ignores the lens
-// position and a closed shutter the time, so chapters 01-05 pay nothing for them.
+// position, and a scene where nothing moves the time, so chapters 01-05 pay nothing for them.
 struct CameraSample {
     Vec2 film;      // continuous image position, (i + 0.5, j + 0.5) at the centre of pixel (i, j)
     Vec2 lens{0};   // on the lens, in lens coordinates: [-1, 1]^2 or the unit disk (depth of field)

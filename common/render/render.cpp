@@ -105,7 +105,7 @@ CameraSample camera_sample(int i, int j, int k, int spp, const Antialiasing& aa,
 
 void lens_and_time(const View& view, bool moving, Sampler& sampler, CameraSample& sample) {
     if (view.has_lens()) sample.lens = lens_point(sample_square(sampler, Dimension::lens), view.lens);
-    if (moving) {
+    if (moving && view.shutter_open < view.shutter_close) {
         const LineSample t = sample_line(sampler, Dimension::time);
         sample.time = shutter_time(t.stratum, t.count, t.u, view.shutter_open, view.shutter_close);
     } else {

@@ -27,7 +27,10 @@ Color beer(const Color& attenuation, Real distance);
 
 // Exercise 17.1: a glossy reflection direction (course §9.11.4): the unit mirror direction r
 // moved across a square of width `width` centred on it, square to r, to the place uv in
-// [0, 1)^2 of that square. Not unit length; it may point below the surface (the caller checks).
+// [0, 1)^2 of that square: r + (u - 1/2) width U + (v - 1/2) width V. The frame is the
+// course's (and the tests check it): U = normalize(e x r), where e is the axis along which r
+// has its smallest component in size (x on ties, then y), and V = r x U. Not unit length; it
+// may point below the surface (the caller checks).
 Vec3 glossy_direction(const Vec3& r, Real width, const Vec2& uv);
 
 }  // namespace rt

@@ -13,11 +13,11 @@ Light read_parallelogram_light(const Fields& f) {
     l.edge_b = f.direction("edge_b");
     const Vec3 a = unit_vector(l.edge_a), b = unit_vector(l.edge_b);
     if (!(glm::length(glm::cross(a, b)) > Real(1e-6))) f.fail("edge_b", "is parallel to edge_a: the light has no area");
-    const Vec3 far = l.position + l.edge_a + l.edge_b;
-    for (int k = 0; k < 3; ++k)
-        if (!limits::contains(limits::coordinate, double(far[k])))
-            f.fail("", "the light reaches past the coordinate limits (" +
-                           limits::refuse(limits::coordinate, double(far[k])) + ")");
+    for (const Vec3& corner : {l.position + l.edge_a, l.position + l.edge_b, l.position + l.edge_a + l.edge_b})
+        for (int k = 0; k < 3; ++k)
+            if (!limits::contains(limits::coordinate, double(corner[k])))
+                f.fail("", "the light reaches past the coordinate limits (" +
+                               limits::refuse(limits::coordinate, double(corner[k])) + ")");
     return l;
 }
 
