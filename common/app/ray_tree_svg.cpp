@@ -219,8 +219,8 @@ std::string ray_tree_svg(const Scene& scene, const RayTree& tree, const std::str
 
     const Real time = tree.nodes.empty() ? 0 : tree.nodes.front().ray.time;
     for (const Surface& s : scene.surfaces.surfaces()) draw_shape(s.shape, Affine{}, proj, unit, time, out);
-    // Point lights as suns. Directional lights have no place to be drawn: their shadow rays
-    // leave the picture towards them.
+    // Point lights as suns, parallelogram lights as their outline. Directional lights have no
+    // place to be drawn: their shadow rays leave the picture towards them.
     for (std::size_t k = 0; k < scene.lights.size(); ++k) {
         const Light& l = scene.lights[k];
         if (l.type == Light::Type::point) {
@@ -228,6 +228,12 @@ std::string ray_tree_svg(const Scene& scene, const RayTree& tree, const std::str
             out += "<circle cx=\"" + num(q.x) + "\" cy=\"" + num(q.y) + "\" r=\"" + num(7 * unit) +
                    "\" fill=\"#fde047\" stroke=\"#a16207\" stroke-width=\"" + num(unit) + "\"><title>light " +
                    std::to_string(k) + ", colour " + triple(l.color) + "</title></circle>\n";
+        } else if (l.is_area()) {
+            const std::vector<P2> corners = {proj(l.position), proj(l.position + l.edge_a),
+                                             proj(l.position + l.edge_a + l.edge_b), proj(l.position + l.edge_b)};
+            const std::string style =
+                "fill=\"#fde047\" fill-opacity=\"0.6\" stroke=\"#a16207\" stroke-width=\"" + num(unit) + "\"";
+            out += polygon(corners, style.c_str());
         }
     }
     // How much of each ray reaches the pixel: the product of the weights on the way there.
