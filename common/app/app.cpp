@@ -191,7 +191,9 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
         ->check(whole)
         ->check(range(limits::image_side))
         ->capture_default_str();
-    cli.add_option("--spp", o.spp, "samples per pixel (1 = the pixel centre)")
+    cli.add_option("--spp", o.spp,
+                   "samples per pixel (default: the scene's, else 1; one random sample with the box filter is the "
+                   "pixel centre)")
         ->check(whole)
         ->check(range(limits::samples_per_pixel))
         ->capture_default_str();
