@@ -113,8 +113,7 @@ void lens_and_time(const View& view, bool moving, Sampler& sampler, CameraSample
     }
 }
 
-Strata strata_of(const Antialiasing& aa, int spp) {
-    if (!pattern_side(spp)) return Strata::none;
+Strata strata_of(const Antialiasing& aa) {
     switch (aa.pattern) {
         case PixelPattern::regular:
             return Strata::centres;
@@ -129,7 +128,7 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
     check(scene, o);
     const View view = scene.camera.view(o.width, o.height);
     const bool moving = scene.surfaces.moves();
-    const Strata strata = strata_of(o.antialiasing, o.spp);
+    const Strata strata = strata_of(o.antialiasing);  // none when spp is not a square: set_strata
     const int side = pattern_side(o.spp).value_or(0);
     const int tiles_x = (o.width + kTile - 1) / kTile;
     const int tiles_y = (o.height + kTile - 1) / kTile;

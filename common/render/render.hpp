@@ -48,8 +48,9 @@ CameraSample camera_sample(int i, int j, int k, int spp, const Antialiasing& aa,
 // what the scene does not need.
 void lens_and_time(const View& view, bool moving, Sampler& sampler, CameraSample& sample);
 
-// How the samples of a pixel divide every dimension: as the pixel pattern does.
-Strata strata_of(const Antialiasing& aa, int spp);
+// How the samples of a pixel divide every dimension: as the pixel pattern does (the Sampler
+// takes no strata when the count is not a square).
+Strata strata_of(const Antialiasing& aa);
 
 // What the ray through the centre of image pixel (x, y) (y down from the top, as image
 // viewers count) sees: the picking use of ray tracing from the course's FAQ. The

@@ -6,32 +6,14 @@ namespace rt {
 
 Vec2 sample_square(Sampler& sampler, Dimension d) {
     if (!sampler.take_stratum(d)) return sampler.get2(d);  // random, or not the sample's first
-    switch (sampler.strata()) {
-        case Strata::none:
-            break;
-        case Strata::centres:
-            return stratified_point(sampler.stratum(d), sampler.side(), Vec2(Real(0.5)));
-        case Strata::jittered: {
-            const int k = sampler.stratum(d);  // shuffles first: the order does not depend on u
-            return stratified_point(k, sampler.side(), sampler.get2(d));
-        }
-    }
-    return sampler.get2(d);
+    const int k = sampler.stratum(d);                      // shuffles first: the order does not depend on the place
+    return stratified_point(k, sampler.side(), sampler.strata() == Strata::centres ? Vec2(Real(0.5)) : sampler.get2(d));
 }
 
 LineSample sample_line(Sampler& sampler, Dimension d) {
     if (!sampler.take_stratum(d)) return {0, 1, sampler.get1(d)};
-    switch (sampler.strata()) {
-        case Strata::none:
-            break;
-        case Strata::centres:
-            return {sampler.stratum(d), sampler.count(), Real(0.5)};
-        case Strata::jittered: {
-            const int k = sampler.stratum(d);
-            return {k, sampler.count(), sampler.get1(d)};
-        }
-    }
-    return {0, 1, sampler.get1(d)};
+    const int k = sampler.stratum(d);
+    return {k, sampler.count(), sampler.strata() == Strata::centres ? Real(0.5) : sampler.get1(d)};
 }
 
 }  // namespace rt
