@@ -33,6 +33,10 @@ struct Builder {
     std::vector<Vec3> centres;
     FlatBvh& out;
     unsigned max_leaf;
+    unsigned lanes;
+
+    // What testing n items costs, in item tests: items go through in passes of `lanes`.
+    Real cost(std::uint32_t n) const { return Real((n + lanes - 1) / lanes); }
 
     void leaf(BvhNode& node, std::uint32_t begin, std::uint32_t end) {
         node.first = begin;
@@ -76,9 +80,9 @@ struct Builder {
                 left.expand(bin_box[b]);
                 count += bin_count[b];
                 if (count == 0 || right_count[b + 1] == 0) continue;
-                const Real cost = half_area(left) * count + right_area[b + 1] * right_count[b + 1];
-                if (cost < best_cost) {
-                    best_cost = cost;
+                const Real split = half_area(left) * cost(count) + right_area[b + 1] * cost(right_count[b + 1]);
+                if (split < best_cost) {
+                    best_cost = split;
                     best_axis = a;
                     best_bin = b;
                 }
@@ -86,8 +90,8 @@ struct Builder {
         }
         if (best_axis < 0) return end;  // every centre in one place: no plane separates them
         const Real parent = half_area(bounds);
-        const Real split_cost = 1 + (parent > 0 ? best_cost / parent : Real(n));
-        if (n <= max_leaf && split_cost >= Real(n)) return end;
+        const Real split_cost = 1 + (parent > 0 ? best_cost / parent : cost(n));
+        if (n <= max_leaf && split_cost >= cost(n)) return end;
         const Real lo = centre_bounds.min[best_axis];
         const Real scale = kBins / (centre_bounds.max[best_axis] - lo);
         const auto mid = std::partition(out.items.begin() + begin, out.items.begin() + end, [&](std::uint32_t item) {
@@ -140,10 +144,10 @@ struct Builder {
 
 }  // namespace
 
-FlatBvh build_bvh(std::span<const Box> boxes, unsigned max_leaf) {
+FlatBvh build_bvh(std::span<const Box> boxes, unsigned max_leaf, unsigned lanes) {
     FlatBvh bvh;
     if (boxes.empty()) return bvh;
-    Builder b{boxes, {}, bvh, std::max(1u, max_leaf)};
+    Builder b{boxes, {}, bvh, std::max(1u, max_leaf), std::max(1u, lanes)};
     b.centres.reserve(boxes.size());
     for (const Box& box : boxes) b.centres.push_back((box.min + box.max) * Real(0.5));
     bvh.items.resize(boxes.size());

@@ -33,8 +33,10 @@ struct FlatBvh {
 
 // Builds over the items' boxes (item k has boxes[k]) with a binned surface-area heuristic;
 // a leaf holds at most max_leaf items. Boxes are stored in float, rounded outwards, so a
-// node never shrinks by the conversion.
-FlatBvh build_bvh(std::span<const Box> boxes, unsigned max_leaf = 4);
+// node never shrinks by the conversion. `lanes` items are tested in one pass (a mesh's
+// triangle blocks), so the heuristic counts a leaf's cost in passes: up to `lanes` items
+// cost as much as one, as Embree's builders count them.
+FlatBvh build_bvh(std::span<const Box> boxes, unsigned max_leaf = 4, unsigned lanes = 1);
 
 // Deeper trees are cut to median splits while building, so a traversal stack of this many
 // entries always suffices.

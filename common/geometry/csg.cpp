@@ -98,12 +98,13 @@ SpanList mesh_spans(const Mesh& mesh, const Ray& ray) {
     if (!might_hit(mesh.box(), ray, line)) return {};
     const MeshAccel& a = mesh.accel();
     std::vector<HitRecord> crossings;
-    any_hit(a.wide, ray, line, [&](std::uint32_t k, Interval& iv) {
-        const auto& c = a.corners[k];
-        TriangleHit h;
-        if (ray_triangle_watertight(ray, c[0], c[1], c[2], iv, h))
-            crossings.push_back(record(mesh, ray, MeshHit{h, a.bvh.items[k]}, SurfaceRef{kNone, kNone}));
-        return false;  // every crossing, not the first
+    const RayShear shear(ray);
+    any_hit(a.wide, ray, line, [&](std::uint32_t b, std::uint32_t, Interval& iv) {
+        for_each_hit(a.blocks[b], &a.corners[4 * b], shear, ray, iv, [&](std::uint32_t index, const TriangleHit& h) {
+            crossings.push_back(record(mesh, ray, MeshHit{h, index}, SurfaceRef{kNone, kNone}));
+            return false;  // every crossing, not the first
+        });
+        return false;
     });
     // The brute-force order (t, then triangle), so the result does not depend on the tree.
     std::sort(crossings.begin(), crossings.end(), [](const HitRecord& x, const HitRecord& y) {

@@ -39,15 +39,22 @@ std::shared_ptr<const MeshAccel> build_accel(const MeshData& d) {
     std::vector<Box> boxes(d.triangles.size());
     for (std::size_t k = 0; k < boxes.size(); ++k)
         for (std::uint32_t v : d.triangles[k]) boxes[k].expand(d.positions[v]);
+    const FlatBvh bvh = build_bvh(boxes, 4, 4);  // a leaf is one block
     auto a = std::make_shared<MeshAccel>();
-    a->bvh = build_bvh(boxes);
-    a->corners.reserve(boxes.size());
-    for (std::uint32_t item : a->bvh.items) {
-        const auto& t = d.triangles[item];
-        a->corners.push_back({d.positions[t[0]], d.positions[t[1]], d.positions[t[2]]});
-    }
-    a->wide = collapse(a->bvh);
-    a->bvh.nodes = {};
+    a->wide = collapse<kMeshBvhWidth>(bvh);
+    // Each leaf's triangles into a block, and the leaf renumbered to it.
+    const auto block = [&](std::uint32_t first, std::uint32_t count) {
+        a->blocks.push_back(pack(std::span(bvh.items).subspan(first, count), d.positions.data(), d.triangles.data()));
+        for (std::uint32_t t : a->blocks.back().index) {
+            const auto& c = d.triangles[t];
+            a->corners.push_back({d.positions[c[0]], d.positions[c[1]], d.positions[c[2]]});
+        }
+        return std::uint32_t(a->blocks.size() - 1);
+    };
+    if (a->wide.root_is_leaf) block(0, a->wide.root_count);
+    for (auto& node : a->wide.nodes)
+        for (int c = 0; c < kMeshBvhWidth; ++c)
+            if (node.count[c] != 0) node.first[c] = block(node.first[c], node.count[c]);
     return a;
 }
 
@@ -78,31 +85,34 @@ Mesh::Mesh(MeshData data) {
 bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
     const MeshAccel& a = mesh.accel();
     if (!might_hit(mesh.box(), ray, interval)) return false;
+    const RayShear shear(ray);
     const Real t_min = interval.min;
     Real best_t = interval.max;
     std::uint32_t best = kNone;
-    return closest_hit(a.wide, ray, interval, [&](std::uint32_t k, Interval& iv) {
-        const auto& c = a.corners[k];
-        TriangleHit h;
-        if (!ray_triangle_watertight(ray, c[0], c[1], c[2], Interval{t_min, widen_far(iv.max)}, h)) return false;
-        const std::uint32_t index = a.bvh.items[k];
-        // Inside the interval asked for, and closer in the one order (lower index at equal t).
-        if (!(h.t <= best_t) || (h.t == best_t && index > best)) return false;
-        best_t = h.t;
-        best = index;
-        result = MeshHit{h, index};
-        iv.max = h.t;
-        return true;
+    return closest_hit(a.wide, ray, interval, [&](std::uint32_t b, std::uint32_t, Interval& iv) {
+        bool closer = false;
+        // The whole block against the interval as it stands; a hit found on the way is kept
+        // only if it is closer in the one order (lower index at equal t).
+        for_each_hit(a.blocks[b], &a.corners[4 * b], shear, ray, Interval{t_min, widen_far(iv.max)},
+                     [&](std::uint32_t index, const TriangleHit& h) {
+                         if (!(h.t <= best_t) || (h.t == best_t && index > best)) return false;
+                         best_t = h.t;
+                         best = index;
+                         result = MeshHit{h, index};
+                         iv.max = h.t;
+                         closer = true;
+                         return false;
+                     });
+        return closer;
     });
 }
 
 bool occluded(const Mesh& mesh, const Ray& ray, Interval interval) {
     if (!might_hit(mesh.box(), ray, interval)) return false;
     const MeshAccel& a = mesh.accel();
-    return any_hit(a.wide, ray, interval, [&](std::uint32_t k, Interval& iv) {
-        const auto& c = a.corners[k];
-        TriangleHit h;
-        return ray_triangle_watertight(ray, c[0], c[1], c[2], iv, h);
+    const RayShear shear(ray);
+    return any_hit(a.wide, ray, interval, [&](std::uint32_t b, std::uint32_t, Interval& iv) {
+        return for_each_hit(a.blocks[b], &a.corners[4 * b], shear, ray, iv, [](std::uint32_t, const TriangleHit&) { return true; });
     });
 }
 

@@ -1,4 +1,4 @@
-#include "core/bvh4.hpp"
+#include "core/wide_bvh.hpp"
 
 #include <limits>
 
@@ -14,10 +14,11 @@ float half_area(const BvhNode& n) {
 // Fills wide node `at` from binary inner node `b`: its two children, then, while there is
 // room, the inner child of largest area replaced by its own two children (the one most rays
 // would open next).
-void fill(const FlatBvh& bvh, std::uint32_t b, Bvh4& out, std::uint32_t at) {
-    std::uint32_t kids[4] = {bvh.nodes[b].first, bvh.nodes[b].first + 1, 0, 0};
+template <int W>
+void fill(const FlatBvh& bvh, std::uint32_t b, WideBvh<W>& out, std::uint32_t at) {
+    std::uint32_t kids[W] = {bvh.nodes[b].first, bvh.nodes[b].first + 1};
     int n = 2;
-    while (n < 4) {
+    while (n < W) {
         int open = -1;
         for (int i = 0; i < n; ++i)
             if (!bvh.nodes[kids[i]].leaf() &&
@@ -28,9 +29,9 @@ void fill(const FlatBvh& bvh, std::uint32_t b, Bvh4& out, std::uint32_t at) {
         kids[open] = first;
         kids[n++] = first + 1;
     }
-    Bvh4Node node{};
+    WideNode<W> node{};
     constexpr float inf = std::numeric_limits<float>::infinity();
-    for (int c = 0; c < 4; ++c)
+    for (int c = 0; c < W; ++c)
         for (int a = 0; a < 3; ++a) {
             node.lo[a][c] = c < n ? bvh.nodes[kids[c]].lo[a] : inf;
             node.hi[a][c] = c < n ? bvh.nodes[kids[c]].hi[a] : -inf;
@@ -51,18 +52,22 @@ void fill(const FlatBvh& bvh, std::uint32_t b, Bvh4& out, std::uint32_t at) {
 
 }  // namespace
 
-Bvh4 collapse(const FlatBvh& bvh) {
-    Bvh4 out;
+template <int W>
+WideBvh<W> collapse(const FlatBvh& bvh) {
+    WideBvh<W> out;
     if (bvh.nodes.empty()) return out;
     if (bvh.nodes[0].leaf()) {
         out.root_is_leaf = true;
         out.root_count = bvh.nodes[0].count;
         return out;
     }
-    out.nodes.reserve(bvh.nodes.size() / 3 + 1);
+    out.nodes.reserve(bvh.nodes.size() / (W - 1) + 1);
     out.nodes.emplace_back();
     fill(bvh, 0, out, 0);
     return out;
 }
+
+template WideBvh<4> collapse<4>(const FlatBvh&);
+template WideBvh<8> collapse<8>(const FlatBvh&);
 
 }  // namespace rt

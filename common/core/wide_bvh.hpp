@@ -1,0 +1,231 @@
+#pragma once
+// A wide BVH: the binary SAH tree of core/bvh.hpp collapsed so that each node holds the
+// boxes of up to W children side by side (book §10.5), as Embree and tinybvh lay out theirs.
+// One node visit tests W boxes with one instruction per plane, and the tree is about log2(W)
+// times shallower than the binary one.
+//
+// The boxes are tested in float, W lanes at once, but conservatively: every rounding of the
+// test is pushed outwards (WideRay below), so a box the ray meets in exact arithmetic is
+// always entered, and its entry distance is never overestimated. The leaves then decide in
+// Real, as brute force does, so the hits found are exactly brute force's.
+#include "core/bvh.hpp"
+
+#include <immintrin.h>
+
+#include <bit>
+#include <cmath>
+#include <cstdint>
+#include <cstring>
+#include <limits>
+#include <utility>
+#include <vector>
+
+namespace rt {
+
+template <int W>
+struct alignas(64) WideNode {
+    float lo[3][W];  // lo[axis][child]; an empty child slot has an empty box (lo > hi)
+    float hi[3][W];
+    std::uint32_t first[W];  // an inner child: its node; a leaf child: its first item slot (or
+                             // whatever the owner renumbered it to: see MeshAccel)
+    std::uint32_t count[W];  // a leaf child: its item count (>= 1); an inner child or an empty slot: 0
+};
+
+template <int W>
+struct WideBvh {
+    std::vector<WideNode<W>> nodes;  // nodes[0] is the root; empty for no items
+    bool root_is_leaf = false;       // one leaf holds everything (items slots 0..count)
+    std::uint32_t root_count = 0;
+
+    std::size_t memory_bytes() const { return nodes.size() * sizeof(WideNode<W>); }
+};
+
+// The binary tree collapsed: item slots (bvh.items) are kept, so per-slot data stays valid.
+template <int W>
+WideBvh<W> collapse(const FlatBvh& bvh);
+
+// Rounding a Real to a float below or above it.
+inline float float_below(Real x) {
+    float f = float(x);
+    return Real(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
+}
+inline float float_above(Real x) {
+    float f = float(x);
+    return Real(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
+}
+
+// A ray prepared for the float box test. Two things make a float test lose a box the exact
+// one enters: the origin's rounding to float, and the rounding of each subtraction and
+// product. The first is taken care of exactly: the near planes are measured from the origin
+// rounded the way that moves them closer, the far planes from the one that moves them away.
+// The second is relative (a few float epsilons of the distance), and the entry distance is
+// lowered and the exit raised by kSlack of their size, more than all of them together.
+struct WideRay {
+    float origin_near[3], origin_far[3], inv[3];
+    bool near_hi[3];  // 1/d < 0: the near plane is the box's hi side
+
+    static constexpr float kSlack = 0x1p-20f;  // 16 float epsilons
+
+    explicit WideRay(const Ray& ray) {
+        for (int a = 0; a < 3; ++a) {
+            const Real inv_d = Real(1) / ray.direction[a];
+            near_hi[a] = inv_d < 0;
+            inv[a] = float(inv_d);  // +-0 directions give +-inf, whose sign is kept
+            const float below = float_below(ray.origin[a]), above = float_above(ray.origin[a]);
+            origin_near[a] = near_hi[a] ? below : above;
+            origin_far[a] = near_hi[a] ? above : below;
+        }
+    }
+};
+
+// W floats as one vector of the compiler's (GCC's and Clang's vector_size). Spelled out per
+// width: GCC's link-time optimiser cannot stream a vector size that depends on W.
+template <int W>
+struct FloatLanes;
+template <>
+struct FloatLanes<4> {
+    using type = float __attribute__((vector_size(16)));
+};
+template <>
+struct FloatLanes<8> {
+    using type = float __attribute__((vector_size(32)));
+};
+
+// Bit c set where lane c of a comparison's result is true.
+inline unsigned lane_mask(FloatLanes<4>::type m) {
+    return unsigned(_mm_movemask_ps(__m128(m)));
+}
+inline unsigned lane_mask(FloatLanes<8>::type m) {
+#ifdef __AVX__
+    return unsigned(_mm256_movemask_ps(__m256(m)));
+#else
+    FloatLanes<4>::type half[2];
+    std::memcpy(half, &m, sizeof half);
+    return lane_mask(half[0]) | lane_mask(half[1]) << 4;
+#endif
+}
+
+// Where the ray enters each child's box within [tmin, tmax] (float bounds, already rounded
+// outwards), lowered to be safe, in t; returns which children it enters (bit c for child c).
+template <int W>
+inline unsigned enter(const WideNode<W>& node, const WideRay& ray, float tmin, float tmax, float (&t)[W]) {
+    using F = typename FloatLanes<W>::type;
+    F lo = F{} + tmin, hi = F{} + tmax;
+    for (int a = 0; a < 3; ++a) {
+        F n, f;
+        std::memcpy(&n, ray.near_hi[a] ? node.hi[a] : node.lo[a], sizeof n);
+        std::memcpy(&f, ray.near_hi[a] ? node.lo[a] : node.hi[a], sizeof f);
+        const F near = (n - ray.origin_near[a]) * ray.inv[a];
+        const F far = (f - ray.origin_far[a]) * ray.inv[a];
+        lo = near > lo ? near : lo;  // a NaN (0 * inf: the ray in a slab's plane) keeps the bound
+        hi = far < hi ? far : hi;
+    }
+    const F abs_lo = lo < 0 ? -lo : lo, abs_hi = hi < 0 ? -hi : hi;
+    lo -= abs_lo * WideRay::kSlack;
+    // The tiny absolute term covers products that underflowed to denormals.
+    hi += abs_hi * WideRay::kSlack + std::numeric_limits<float>::min();
+    std::memcpy(t, &lo, sizeof t);
+    return lane_mask(F(lo <= hi));
+}
+
+// The closest hit, as closest_hit() in core/bvh.hpp: children entered nearest first, the
+// others on a stack with their entry distances, skipped when popped if a hit closer than
+// that has been found since. A leaf is tested whole, leaf(first, count, interval): the
+// caller keeps its items together (geometry/triangle_block.hpp), and as there, it narrows
+// interval.max and returns true when it finds a closer hit.
+template <int W, class Leaf>
+bool closest_hit(const WideBvh<W>& bvh, const Ray& ray, Interval interval, Leaf&& leaf) {
+    if (bvh.nodes.empty() && !bvh.root_is_leaf) return false;
+    TallyScope tally;
+    TraversalCount& count = tally.count;
+    bool found = false;
+    if (bvh.root_is_leaf) {
+        count.items += bvh.root_count;
+        return leaf(0, bvh.root_count, interval);
+    }
+    const WideRay r(ray);
+    const float tmin = float_below(interval.min);
+    float tmax = float_above(widen_far(interval.max));
+    struct Entry {
+        std::uint32_t first, count;
+        float t;
+    };
+    Entry stack[(W - 1) * kMaxBvhDepth + 2];
+    int top = 0;
+    Entry at{0, 0, tmin};
+    for (;;) {
+        if (at.count != 0) {
+            count.items += at.count;
+            if (leaf(at.first, at.count, interval)) {
+                found = true;
+                tmax = float_above(widen_far(interval.max));
+            }
+        } else {
+            const WideNode<W>& node = bvh.nodes[at.first];
+            float t[W];
+            unsigned mask = enter(node, r, tmin, tmax, t);
+            count.nodes += W;
+            if (mask != 0 && (mask & (mask - 1)) == 0) {  // one child entered: no stack
+                const int c = std::countr_zero(mask);
+                at = Entry{node.first[c], node.count[c], t[c]};
+                continue;
+            }
+            // The entered children, nearest first (insertion sort: there are few).
+            int order[W], n = 0;
+            for (; mask != 0; mask &= mask - 1) {
+                const int c = std::countr_zero(mask);
+                int j = n++;
+                for (; j > 0 && t[order[j - 1]] > t[c]; --j) order[j] = order[j - 1];
+                order[j] = c;
+            }
+            if (n != 0) {
+                for (int i = n - 1; i > 0; --i) {
+                    const int c = order[i];
+                    stack[top++] = Entry{node.first[c], node.count[c], t[c]};
+                }
+                at = Entry{node.first[order[0]], node.count[order[0]], t[order[0]]};
+                continue;
+            }
+        }
+        // Next: the nearest postponed child still in front of the best hit.
+        for (;;) {
+            if (top == 0) return found;
+            at = stack[--top];
+            if (at.t <= tmax) break;
+        }
+    }
+}
+
+// Is there any hit? Stops at the first leaf for which leaf(first, count, interval) is true.
+template <int W, class Leaf>
+bool any_hit(const WideBvh<W>& bvh, const Ray& ray, Interval interval, Leaf&& leaf) {
+    if (bvh.nodes.empty() && !bvh.root_is_leaf) return false;
+    TallyScope tally;
+    TraversalCount& count = tally.count;
+    if (bvh.root_is_leaf) {
+        count.items += bvh.root_count;
+        return leaf(0, bvh.root_count, interval);
+    }
+    const WideRay r(ray);
+    const float tmin = float_below(interval.min), tmax = float_above(widen_far(interval.max));
+    std::uint32_t stack[(W - 1) * kMaxBvhDepth + 2];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const WideNode<W>& node = bvh.nodes[stack[--top]];
+        float t[W];
+        count.nodes += W;
+        for (unsigned mask = enter(node, r, tmin, tmax, t); mask != 0; mask &= mask - 1) {
+            const int c = std::countr_zero(mask);
+            if (node.count[c] == 0) {
+                stack[top++] = node.first[c];
+                continue;
+            }
+            count.items += node.count[c];
+            if (leaf(node.first[c], node.count[c], interval)) return true;
+        }
+    }
+    return false;
+}
+
+}  // namespace rt

@@ -1,0 +1,46 @@
+#include "geometry/triangle_block.hpp"
+
+#include "core/wide_bvh.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <utility>
+
+namespace rt {
+
+RayShear::RayShear(const Ray& ray) {
+    const Vec3& d = ray.direction;
+    const Vec3 ad = glm::abs(d);
+    kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
+    kx = (kz + 1) % 3;
+    ky = (kx + 1) % 3;
+    if (d[kz] < 0) std::swap(kx, ky);
+    sx = float(d[kx] / d[kz]);
+    sy = float(d[ky] / d[kz]);
+    sz = float(Real(1) / d[kz]);
+    for (int a = 0; a < 3; ++a) origin[a] = float(ray.origin[a]);
+    const Vec3 ao = glm::abs(ray.origin);
+    origin_size = float_above(std::max({ao.x, ao.y, ao.z}));
+}
+
+TriangleBlock pack(std::span<const std::uint32_t> triangles, const Vec3* positions,
+                   const std::array<std::uint32_t, 3>* corners) {
+    TriangleBlock block;
+    block.count = std::uint32_t(triangles.size());
+    for (int lane = 0; lane < 4; ++lane) {
+        // Unused lanes repeat the first triangle: finite values, masked off by count.
+        const std::uint32_t t = triangles[std::size_t(lane) < triangles.size() ? std::size_t(lane) : 0];
+        block.index[lane] = t;
+        Real size = 0;
+        for (int v = 0; v < 3; ++v)
+            for (int a = 0; a < 3; ++a) {
+                const Real c = positions[corners[t][std::size_t(v)]][a];
+                block.p[v][a][lane] = float(c);
+                size = std::max(size, std::abs(c));
+            }
+        block.size[lane] = float_above(size);
+    }
+    return block;
+}
+
+}  // namespace rt

@@ -1,0 +1,145 @@
+#pragma once
+// Four triangles side by side, so that a BVH leaf is tested in one pass of four-lane vector
+// instructions instead of four calls (book §10.5). The pass is a filter in float: it runs
+// the watertight test's arithmetic (exercise 3.2) on all four lanes and keeps every
+// triangle that the exact test might accept, with margins that bound float's rounding.
+// The triangles it keeps are then decided by ray_triangle_watertight itself, in Real, so
+// the hits are exactly brute force's.
+#include "core/ray.hpp"
+#include "geometry/triangle.hpp"
+
+#include <array>
+#include <cmath>
+#include <bit>
+#include <cstdint>
+#include <immintrin.h>
+#include <cstring>
+#include <limits>
+#include <span>
+
+namespace rt {
+
+// Four triangles side by side, in float: a block is three cache lines, the size Embree's
+// leaves have. The exact test reads the Real corners from the mesh, for the few lanes the
+// filter keeps.
+struct alignas(64) TriangleBlock {
+    float p[3][3][4];         // p[corner][axis][lane]
+    float size[4];            // the largest |coordinate| of the lane's corners, rounded up
+    std::uint32_t index[4];   // each lane's triangle number
+    std::uint32_t count = 0;  // lanes in use, from 0
+};
+
+// The watertight test's view of a ray, in float, once per ray instead of once per triangle:
+// the axis where the direction is largest becomes z, and the shear that makes the ray point
+// along +z (course §9.3.2; book §3.4), chosen as exercise 3.2 chooses them.
+struct RayShear {
+    float origin[3];
+    float origin_size;  // the largest |coordinate| of the origin, rounded up
+    int kx, ky, kz;
+    float sx, sy, sz;
+
+    explicit RayShear(const Ray& ray);
+};
+
+namespace block_detail {
+
+using Lanes = float __attribute__((vector_size(16)));
+using Mask = decltype(Lanes{} < Lanes{});
+
+// Bit i set where lane i of a comparison is true.
+inline unsigned bits(Mask m) {
+    return unsigned(_mm_movemask_ps(__m128(m)));
+}
+
+inline Lanes load(const float (&lanes)[4]) {
+    Lanes v;
+    std::memcpy(&v, lanes, sizeof v);
+    return v;
+}
+
+inline Lanes magnitude(Lanes v) {
+    return v < 0 ? -v : v;
+}
+
+inline Lanes larger(Lanes a, Lanes b) {
+    return a > b ? a : b;
+}
+
+inline constexpr float u = 0x1p-24f;  // float's unit roundoff
+
+}  // namespace block_detail
+
+// Bit i set for each lane i < block.count whose triangle the ray might hit for t in the
+// interval: every lane that exercise 3.2's test, run in Real, could accept, and a few more.
+//
+// It is the exercise's arithmetic in float, with a bound on how far each result can be from
+// the exact one (the usual forward error analysis, rounded up generously):
+// - a sheared corner coordinate (x, y) is within E = 16 u (corner size + origin size): the
+//   corner and the origin each rounded to float, their difference, the shear's product and
+//   difference each rounded once;
+// - an edge function, two products of such coordinates (each at most R + E) less each other,
+//   is within m = 4 (R + E) E + 4 u (R + E)^2;
+// - det = U + V + W and T = U za + V zb + W zc likewise, within err_det and err_T.
+// A lane is dropped only when its edge functions disagree in sign by more than m, or when its
+// t is surely outside the interval: behind the origin beyond doubt, or, where det and T are
+// over 1024 times their error (so t is good to 2^-9), more than 2^-8 of t outside.
+inline unsigned candidates(const TriangleBlock& block, const RayShear& r, Interval interval) {
+    using namespace block_detail;
+    const int k[3] = {r.kx, r.ky, r.kz};
+    Lanes x[3], y[3], z[3];  // corner v sheared: x[v], y[v]; z[v] along the ray's main axis
+    for (int v = 0; v < 3; ++v) {
+        const Lanes a = load(block.p[v][k[0]]) - r.origin[k[0]];
+        const Lanes b = load(block.p[v][k[1]]) - r.origin[k[1]];
+        z[v] = load(block.p[v][k[2]]) - r.origin[k[2]];
+        x[v] = a - r.sx * z[v];
+        y[v] = b - r.sy * z[v];
+    }
+    const Lanes R = larger(larger(larger(magnitude(x[0]), magnitude(y[0])), larger(magnitude(x[1]), magnitude(y[1]))),
+                           larger(magnitude(x[2]), magnitude(y[2])));
+    const Lanes E = (load(block.size) + r.origin_size) * (16 * u) + 0x1p-100f;
+    const Lanes RE = R + E, RE2 = RE * RE;
+    const Lanes m = RE * (4 * E + (4 * u) * RE) + 0x1p-100f;
+
+    const Lanes U = x[2] * y[1] - y[2] * x[1];
+    const Lanes V = x[0] * y[2] - y[0] * x[2];
+    const Lanes W = x[1] * y[0] - y[1] * x[0];
+    const Mask inside = ((U >= -m) & (V >= -m) & (W >= -m)) | ((U <= m) & (V <= m) & (W <= m));
+    unsigned keep = bits(inside) & ((1u << block.count) - 1);
+    if (keep == 0) return 0;
+
+    const Lanes za = r.sz * z[0], zb = r.sz * z[1], zc = r.sz * z[2];
+    const Lanes det = U + V + W, T = U * za + V * zb + W * zc;
+    const Lanes Z = larger(larger(magnitude(za), magnitude(zb)), magnitude(zc));
+    const Lanes Ez = E * std::abs(r.sz);
+    const Lanes err_det = 3 * m + (8 * u) * RE2;
+    const Lanes err_T = 3 * (m * (Z + Ez) + 2 * RE2 * Ez + (4 * u) * RE2 * Z);
+    // With det made positive, T's sign is t's.
+    const Lanes det_p = magnitude(det), T_p = det < 0 ? -T : T;
+    Mask out = Mask{};
+    if (interval.min >= 0) out = (det_p > err_det) & (T_p + err_T < 0);
+    const Mask sure = (det_p > 1024 * err_det) & (T_p > 1024 * err_T);
+    const Lanes t = T_p / det_p;
+    out |= sure & ((t * (1 - 0x1p-8f) > float(interval.max)) | (t * (1 + 0x1p-8f) < float(interval.min)));
+    return keep & ~bits(out);
+}
+
+// Calls f(triangle, hit) for each triangle of the block that exercise 3.2's exact test finds
+// in the interval, lane by lane, until f returns true; returns whether it did. corners[lane]
+// holds the lane's corners in Real.
+template <class F>
+bool for_each_hit(const TriangleBlock& block, const std::array<Vec3, 3>* corners, const RayShear& shear,
+                  const Ray& ray, Interval interval, F&& f) {
+    for (unsigned m = candidates(block, shear, interval); m != 0; m &= m - 1) {
+        const int lane = std::countr_zero(m);
+        const auto& c = corners[lane];
+        TriangleHit h;
+        if (ray_triangle_watertight(ray, c[0], c[1], c[2], interval, h) && f(block.index[lane], h)) return true;
+    }
+    return false;
+}
+
+// Triangles packed four to a block in the order given.
+TriangleBlock pack(std::span<const std::uint32_t> triangles, const Vec3* positions,
+                   const std::array<std::uint32_t, 3>* corners);
+
+}  // namespace rt
