@@ -2,10 +2,10 @@
 // triangles, one ray at a time on each side (rtcIntersect1 / rtcOccluded1), on 1 and 2
 // threads, measured in the same run. Built only when Debian's libembree-dev is installed.
 //
-//   build/release/bin/bench_embree [--rounds N] [--size S] [--no-procedural] [MESH.obj ...]
+//   build/release/bin/bench_embree [--rounds N] [--size S] [--no-procedural] [--only TEXT] [MESH.obj ...]
 //
 // Inputs: a terrain of ~10^5 and one of ~10^6 triangles, a soup of 10^6 triangles, and every
-// OBJ given. Rays: the primary rays of an S x S camera (default 512) looking at the mesh, and
+// OBJ given; --only keeps those whose name contains TEXT. Rays: the primary rays of an S x S camera (default 512) looking at the mesh, and
 // shadow rays from each primary hit (the lab's, offset along the ray) towards a point light.
 // For each input and thread count it prints Mrays/s of both and their ratio (best of N
 // rounds, the two interleaved), build times (the lab's SAH, Embree's high-quality build),
@@ -224,6 +224,7 @@ void measure(const Input& input, int size, int rounds) {
 int main(int argc, char** argv) {
     int rounds = 3, size = 512;
     bool procedural = true;
+    std::string only;
     std::vector<Input> inputs;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
@@ -232,12 +233,14 @@ int main(int argc, char** argv) {
                 rounds = std::max(1, std::atoi(argv[++i]));
             } else if (a == "--size" && i + 1 < argc) {
                 size = std::max(16, std::atoi(argv[++i]));
+            } else if (a == "--only" && i + 1 < argc) {
+                only = argv[++i];
             } else if (a == "--no-procedural") {
                 procedural = false;
             } else if (!a.empty() && a[0] != '-') {
                 inputs.push_back({a.substr(a.find_last_of('/') + 1), load_obj(a)});
             } else {
-                std::fprintf(stderr, "usage: bench_embree [--rounds N] [--size S] [--no-procedural] [MESH.obj ...]\n");
+                std::fprintf(stderr, "usage: bench_embree [--rounds N] [--size S] [--no-procedural] [--only TEXT] [MESH.obj ...]\n");
                 return 2;
             }
         } catch (const std::exception& e) {
@@ -254,6 +257,7 @@ int main(int argc, char** argv) {
         "lab: Real=%s, fast path (two-level: 4-wide BVH in each mesh, binary over the surfaces); Embree %d.%d.%d, "
         "rtcIntersect1/rtcOccluded1\n",
         real_name(), RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH);
-    for (const Input& in : inputs) measure(in, size, rounds);
+    for (const Input& in : inputs)
+        if (in.name.find(only) != std::string::npos) measure(in, size, rounds);
     return 0;
 }

@@ -14,6 +14,8 @@ FastBvh::FastBvh(const SurfaceList& surfaces) {
 }
 
 bool FastBvh::hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
+    // A scene of one surface (a mesh alone) needs no upper level: its own search is the whole.
+    if (surfaces.size() == 1) return surfaces[SurfaceId(0)].hit(ray, interval, rec);
     HitRecord best = no_hit_before(interval.max);
     const bool found = closest_hit(bvh_, ray, interval, [&](std::uint32_t k, Interval& iv) {
         if (!hit_closer(surfaces[SurfaceId(bvh_.items[k])], ray, iv, best)) return false;
@@ -25,6 +27,7 @@ bool FastBvh::hit(const SurfaceList& surfaces, const Ray& ray, Interval interval
 }
 
 bool FastBvh::occluded(const SurfaceList& surfaces, const Ray& ray, Interval interval) const {
+    if (surfaces.size() == 1) return surfaces[SurfaceId(0)].occluded(ray, interval);
     return any_hit(bvh_, ray, interval,
                    [&](std::uint32_t k, Interval& iv) { return surfaces[SurfaceId(bvh_.items[k])].occluded(ray, iv); });
 }

@@ -9,18 +9,6 @@ namespace rt {
 
 namespace {
 
-// Float bounds that contain the Real ones: a box may only grow when it is stored.
-float round_down(Real x) {
-    float f = float(x);
-    if (Real(f) > x) f = std::nextafter(f, -std::numeric_limits<float>::infinity());
-    return f;
-}
-float round_up(Real x) {
-    float f = float(x);
-    if (Real(f) < x) f = std::nextafter(f, std::numeric_limits<float>::infinity());
-    return f;
-}
-
 Real half_area(const Box& b) {
     const Vec3 e = b.max - b.min;
     return e.x * e.y + e.y * e.z + e.z * e.x;
@@ -118,9 +106,9 @@ struct Builder {
             bounds.expand(boxes[out.items[k]]);
             centre_bounds.expand(centres[out.items[k]]);
         }
-        for (int a = 0; a < 3; ++a) {
-            out.nodes[at].lo[a] = round_down(bounds.min[a]);
-            out.nodes[at].hi[a] = round_up(bounds.max[a]);
+        for (int a = 0; a < 3; ++a) {  // float bounds containing the Real ones: a box only grows
+            out.nodes[at].lo[a] = float_below(bounds.min[a]);
+            out.nodes[at].hi[a] = float_above(bounds.max[a]);
         }
         const std::uint32_t n = end - begin;
         if (n == 1) return leaf(out.nodes[at], begin, end);

@@ -7,12 +7,26 @@
 // is accel/bvh.hpp.
 #include "core/box.hpp"
 
+#include <bit>
 #include <cstdint>
 #include <span>
 #include <utility>
 #include <vector>
 
 namespace rt {
+
+// Rounding a Real to a float below or above it. Stepping the bits by one is nextafter for
+// the finite floats that can need it (an infinity converts exactly), without a libm call
+// in the per-ray set-up.
+inline float float_below(Real x) {
+    const float f = float(x);
+    if (!(Real(f) > x)) return f;
+    const auto b = std::bit_cast<std::uint32_t>(f);
+    return f > 0 ? std::bit_cast<float>(b - 1) : f < 0 ? std::bit_cast<float>(b + 1) : -0x1p-149f;
+}
+inline float float_above(Real x) {
+    return -float_below(-x);
+}
 
 struct BvhNode {
     float lo[3];

@@ -44,16 +44,6 @@ struct WideBvh {
 template <int W>
 WideBvh<W> collapse(const FlatBvh& bvh);
 
-// Rounding a Real to a float below or above it.
-inline float float_below(Real x) {
-    float f = float(x);
-    return Real(f) > x ? std::nextafter(f, -std::numeric_limits<float>::infinity()) : f;
-}
-inline float float_above(Real x) {
-    float f = float(x);
-    return Real(f) < x ? std::nextafter(f, std::numeric_limits<float>::infinity()) : f;
-}
-
 // A ray prepared for the float box test. Two things make a float test lose a box the exact
 // one enters: the origin's rounding to float, and the rounding of each subtraction and
 // product. The first is taken care of exactly: the near planes are measured from the origin
@@ -128,17 +118,19 @@ inline unsigned enter(const WideNode<W>& node, const WideRay& ray, float tmin, f
     return lane_mask(F(lo <= hi));
 }
 
-// The closest hit, as closest_hit() in core/bvh.hpp: children entered nearest first, the
-// others on a stack with their entry distances, skipped when popped if a hit closer than
-// that has been found since. A leaf is tested whole, leaf(first, count, interval): the
-// caller keeps its items together (geometry/triangle_block.hpp), and as there, it narrows
-// interval.max and returns true when it finds a closer hit.
-template <int W, class Leaf>
-bool closest_hit(const WideBvh<W>& bvh, const Ray& ray, Interval interval, Leaf&& leaf) {
+// Both queries walk the tree the same way: the children a ray enters, nearest first, the
+// others on a stack with their entry distances. A leaf is tested whole, leaf(first, count,
+// interval): the caller keeps its items together (geometry/triangle_block.hpp).
+// - The closest hit (kAny false), as closest_hit() in core/bvh.hpp: leaf narrows
+//   interval.max and returns true when it finds a closer hit, and a postponed child whose
+//   entry lies beyond the best hit found since is skipped.
+// - Any hit (kAny true): the first leaf that returns true ends the search. Near first here
+//   too: a shadow ray's blocker is found sooner (Embree orders its occlusion rays as well).
+template <bool kAny, int W, class Leaf>
+bool traverse(const WideBvh<W>& bvh, const Ray& ray, Interval interval, Leaf&& leaf) {
     if (bvh.nodes.empty() && !bvh.root_is_leaf) return false;
     TallyScope tally;
     TraversalCount& count = tally.count;
-    bool found = false;
     if (bvh.root_is_leaf) {
         count.items += bvh.root_count;
         return leaf(0, bvh.root_count, interval);
@@ -153,10 +145,12 @@ bool closest_hit(const WideBvh<W>& bvh, const Ray& ray, Interval interval, Leaf&
     Entry stack[(W - 1) * kMaxBvhDepth + 2];
     int top = 0;
     Entry at{0, 0, tmin};
+    bool found = false;
     for (;;) {
         if (at.count != 0) {
             count.items += at.count;
             if (leaf(at.first, at.count, interval)) {
+                if (kAny) return true;
                 found = true;
                 tmax = float_above(widen_far(interval.max));
             }
@@ -191,41 +185,19 @@ bool closest_hit(const WideBvh<W>& bvh, const Ray& ray, Interval interval, Leaf&
         for (;;) {
             if (top == 0) return found;
             at = stack[--top];
-            if (at.t <= tmax) break;
+            if (kAny || at.t <= tmax) break;
         }
     }
 }
 
-// Is there any hit? Stops at the first leaf for which leaf(first, count, interval) is true.
+template <int W, class Leaf>
+bool closest_hit(const WideBvh<W>& bvh, const Ray& ray, Interval interval, Leaf&& leaf) {
+    return traverse<false>(bvh, ray, interval, leaf);
+}
+
 template <int W, class Leaf>
 bool any_hit(const WideBvh<W>& bvh, const Ray& ray, Interval interval, Leaf&& leaf) {
-    if (bvh.nodes.empty() && !bvh.root_is_leaf) return false;
-    TallyScope tally;
-    TraversalCount& count = tally.count;
-    if (bvh.root_is_leaf) {
-        count.items += bvh.root_count;
-        return leaf(0, bvh.root_count, interval);
-    }
-    const WideRay r(ray);
-    const float tmin = float_below(interval.min), tmax = float_above(widen_far(interval.max));
-    std::uint32_t stack[(W - 1) * kMaxBvhDepth + 2];
-    int top = 0;
-    stack[top++] = 0;
-    while (top > 0) {
-        const WideNode<W>& node = bvh.nodes[stack[--top]];
-        float t[W];
-        count.nodes += W;
-        for (unsigned mask = enter(node, r, tmin, tmax, t); mask != 0; mask &= mask - 1) {
-            const int c = std::countr_zero(mask);
-            if (node.count[c] == 0) {
-                stack[top++] = node.first[c];
-                continue;
-            }
-            count.items += node.count[c];
-            if (leaf(node.first[c], node.count[c], interval)) return true;
-        }
-    }
-    return false;
+    return traverse<true>(bvh, ray, interval, leaf);
 }
 
 }  // namespace rt
