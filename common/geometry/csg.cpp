@@ -100,10 +100,11 @@ SpanList mesh_spans(const Mesh& mesh, const Ray& ray) {
     std::vector<HitRecord> crossings;
     const RayShear shear(ray);
     any_hit(a.wide, ray, line, [&](std::uint32_t b, std::uint32_t, Interval& iv) {
-        for_each_hit(a.blocks[b], &a.corners[4 * b], shear, ray, iv, [&](std::uint32_t index, const TriangleHit& h) {
-            crossings.push_back(record(mesh, ray, MeshHit{h, index}, SurfaceRef{kNone, kNone}));
-            return false;  // every crossing, not the first
-        });
+        for_each_hit(a.blocks[b], &a.corners[4 * b], shear, ray, iv,
+                     [&](std::uint32_t index, const TriangleHit& h, const std::array<Vec3, 3>& c) {
+                         crossings.push_back(record(mesh, ray, MeshHit{h, index, &c}, SurfaceRef{kNone, kNone}));
+                         return false;  // every crossing, not the first
+                     });
         return false;
     });
     // The brute-force order (t, then triangle), so the result does not depend on the tree.

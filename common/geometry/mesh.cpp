@@ -42,6 +42,8 @@ std::shared_ptr<const MeshAccel> build_accel(const MeshData& d) {
     const FlatBvh bvh = build_bvh(boxes, 4, 4);  // a leaf is one block
     auto a = std::make_shared<MeshAccel>();
     a->wide = collapse<kMeshBvhWidth>(bvh);
+    a->blocks.reserve(bvh.items.size() / 2 + 1);
+    a->corners.reserve(4 * a->blocks.capacity());
     // Each leaf's triangles into a block, and the leaf renumbered to it.
     const auto block = [&](std::uint32_t first, std::uint32_t count) {
         a->blocks.push_back(pack(std::span(bvh.items).subspan(first, count), d.positions.data(), d.triangles.data()));
@@ -94,11 +96,11 @@ bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
         // The whole block against the interval as it stands; a hit found on the way is kept
         // only if it is closer in the one order (lower index at equal t).
         for_each_hit(a.blocks[b], &a.corners[4 * b], shear, ray, Interval{t_min, widen_far(iv.max)},
-                     [&](std::uint32_t index, const TriangleHit& h) {
+                     [&](std::uint32_t index, const TriangleHit& h, const std::array<Vec3, 3>& corners) {
                          if (!(h.t <= best_t) || (h.t == best_t && index > best)) return false;
                          best_t = h.t;
                          best = index;
-                         result = MeshHit{h, index};
+                         result = MeshHit{h, index, &corners};
                          iv.max = h.t;
                          closer = true;
                          return false;
@@ -112,15 +114,21 @@ bool occluded(const Mesh& mesh, const Ray& ray, Interval interval) {
     const MeshAccel& a = mesh.accel();
     const RayShear shear(ray);
     return any_hit(a.wide, ray, interval, [&](std::uint32_t b, std::uint32_t, Interval& iv) {
-        return for_each_hit(a.blocks[b], &a.corners[4 * b], shear, ray, iv, [](std::uint32_t, const TriangleHit&) { return true; });
+        return for_each_hit(a.blocks[b], &a.corners[4 * b], shear, ray, iv,
+                            [](std::uint32_t, const TriangleHit&, const std::array<Vec3, 3>&) { return true; });
     });
 }
 
 HitRecord record(const Mesh& mesh, const Ray&, const MeshHit& h, SurfaceRef who) {
     const MeshData& d = mesh.data();
-    const auto& tri = d.triangles[h.index];
-    HitRecord rec =
-        triangle_record(d.positions[tri[0]], d.positions[tri[1]], d.positions[tri[2]], h.triangle, who, h.index);
+    HitRecord rec;
+    if (h.corners) {
+        const auto& c = *h.corners;
+        rec = triangle_record(c[0], c[1], c[2], h.triangle, who, h.index);
+    } else {
+        const auto& tri = d.triangles[h.index];
+        rec = triangle_record(d.positions[tri[0]], d.positions[tri[1]], d.positions[tri[2]], h.triangle, who, h.index);
+    }
     if (mesh.smooth()) {
         const auto& nt = d.normal_triangles[h.index];
         const Real alpha = 1 - h.triangle.beta - h.triangle.gamma;

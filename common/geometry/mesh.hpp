@@ -37,6 +37,9 @@ void validate(const MeshData& mesh, const std::string& what);
 struct MeshHit {
     TriangleHit triangle;
     std::uint32_t index;
+    // Its corners, when the search has them at hand (MeshAccel::corners): the record then
+    // reads them there instead of through the index arrays, two cache misses on a big mesh.
+    const std::array<Vec3, 3>* corners = nullptr;
 };
 
 // How many children a node of a mesh's BVH has (book §10.5 measures 4 against 8).
@@ -46,7 +49,7 @@ inline constexpr int kMeshBvhWidth = 8;
 // are blocks of up to four triangles with their corners copied out side by side, so a leaf
 // is one read of consecutive memory and one pass of vector instructions.
 struct MeshAccel {
-    WideBvh<kMeshBvhWidth> wide;                // a leaf child's `first` is its block's number
+    WideBvh<kMeshBvhWidth> wide;  // a leaf child's `first` is its block's number
     std::vector<TriangleBlock> blocks;
     std::vector<std::array<Vec3, 3>> corners;  // corners[4 b + lane]: the exact test's, in Real
 

@@ -8,11 +8,11 @@
 #include "core/ray.hpp"
 #include "geometry/triangle.hpp"
 
-#include <array>
-#include <cmath>
-#include <bit>
-#include <cstdint>
 #include <immintrin.h>
+#include <array>
+#include <bit>
+#include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <limits>
 #include <span>
@@ -123,17 +123,17 @@ inline unsigned candidates(const TriangleBlock& block, const RayShear& r, Interv
     return keep & ~bits(out);
 }
 
-// Calls f(triangle, hit) for each triangle of the block that exercise 3.2's exact test finds
-// in the interval, lane by lane, until f returns true; returns whether it did. corners[lane]
-// holds the lane's corners in Real.
+// Calls f(triangle, hit, its corners) for each triangle of the block that exercise 3.2's
+// exact test finds in the interval, lane by lane, until f returns true; returns whether it
+// did. corners[lane] holds the lane's corners in Real.
 template <class F>
-bool for_each_hit(const TriangleBlock& block, const std::array<Vec3, 3>* corners, const RayShear& shear,
-                  const Ray& ray, Interval interval, F&& f) {
+bool for_each_hit(const TriangleBlock& block, const std::array<Vec3, 3>* corners, const RayShear& shear, const Ray& ray,
+                  Interval interval, F&& f) {
     for (unsigned m = candidates(block, shear, interval); m != 0; m &= m - 1) {
         const int lane = std::countr_zero(m);
         const auto& c = corners[lane];
         TriangleHit h;
-        if (ray_triangle_watertight(ray, c[0], c[1], c[2], interval, h) && f(block.index[lane], h)) return true;
+        if (ray_triangle_watertight(ray, c[0], c[1], c[2], interval, h) && f(block.index[lane], h, c)) return true;
     }
     return false;
 }
