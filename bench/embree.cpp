@@ -256,7 +256,8 @@ int main(int argc, char** argv) {
                                        {"soup 10^6", triangle_soup(Vec3(0), 10, 0.1, 1000000, 3)}});
     }
     std::printf(
-        "lab: Real=%s, fast path (two-level: 4-wide BVH in each mesh, binary over the surfaces); Embree %d.%d.%d, "
+        "lab: Real=%s, fast path (two-level: 8-wide float BVH with 4-triangle blocks in each mesh, binary over the "
+        "surfaces); Embree %d.%d.%d, "
         "rtcIntersect1/rtcOccluded1\n",
         real_name(), RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH);
     for (const Input& in : inputs)
