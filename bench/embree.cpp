@@ -5,8 +5,9 @@
 //   build/release/bin/bench_embree [--rounds N] [--size S] [--no-procedural] [--only TEXT] [MESH.obj ...]
 //
 // Inputs: a terrain of ~10^5 and one of ~10^6 triangles, a soup of 10^6 triangles, and every
-// OBJ given; --only keeps those whose name contains TEXT. Rays: the primary rays of an S x S camera (default 512)
-// looking at the mesh, and shadow rays from each primary hit (the lab's, offset along the ray) towards a point light.
+// OBJ given; --only keeps those whose name contains TEXT. Rays: the primary rays of an S x S
+// camera (default 512) looking at the mesh, and shadow rays from each primary hit (the
+// lab's, offset along the ray) towards a point light.
 // For each input and thread count it prints Mrays/s of both and their ratio (best of N
 // rounds, the two interleaved), build times (the lab's SAH, Embree's high-quality build),
 // memory per triangle, and how often the two agree: hit or miss, and t to 1e-4 relative.

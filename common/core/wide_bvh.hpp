@@ -13,11 +13,9 @@
 #include <immintrin.h>
 
 #include <bit>
-#include <cmath>
 #include <cstdint>
 #include <cstring>
 #include <limits>
-#include <utility>
 #include <vector>
 
 namespace rt {

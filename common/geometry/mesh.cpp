@@ -42,8 +42,9 @@ std::shared_ptr<const MeshAccel> build_accel(const MeshData& d) {
     const FlatBvh bvh = build_bvh(boxes, 4, 4);  // a leaf is one block
     auto a = std::make_shared<MeshAccel>();
     a->wide = collapse<kMeshBvhWidth>(bvh);
-    a->blocks.reserve(bvh.items.size() / 2 + 1);
-    a->corners.reserve(4 * a->blocks.capacity());
+    const std::size_t leaves = (bvh.nodes.size() + 1) / 2;  // every inner node has two children
+    a->blocks.reserve(leaves);
+    a->corners.reserve(4 * leaves);
     // Each leaf's triangles into a block, and the leaf renumbered to it.
     const auto block = [&](std::uint32_t first, std::uint32_t count) {
         a->blocks.push_back(pack(std::span(bvh.items).subspan(first, count), d.positions.data(), d.triangles.data()));

@@ -1,7 +1,5 @@
 #include "geometry/triangle_block.hpp"
 
-#include "core/wide_bvh.hpp"
-
 #include <algorithm>
 #include <cmath>
 #include <utility>

@@ -6,9 +6,9 @@
 // The triangles it keeps are then decided by ray_triangle_watertight itself, in Real, so
 // the hits are exactly brute force's.
 #include "core/ray.hpp"
+#include "core/wide_bvh.hpp"
 #include "geometry/triangle.hpp"
 
-#include <immintrin.h>
 #include <array>
 #include <bit>
 #include <cmath>
@@ -20,8 +20,8 @@
 namespace rt {
 
 // Four triangles side by side, in float: a block is three cache lines, the size Embree's
-// leaves have. The exact test reads the Real corners from the mesh, for the few lanes the
-// filter keeps.
+// leaves have. The exact test reads the Real corners from a second array in the same order
+// (MeshAccel::corners), for the few lanes the filter keeps.
 struct alignas(64) TriangleBlock {
     float p[3][3][4];         // p[corner][axis][lane]
     float size[4];            // the largest |coordinate| of the lane's corners, rounded up
@@ -43,22 +43,21 @@ struct RayShear {
 
 namespace block_detail {
 
-using Lanes = float __attribute__((vector_size(16)));
+using Lanes = FloatLanes<4>::type;
 using Mask = decltype(Lanes{} < Lanes{});
 
-// Bit i set where lane i of a comparison is true.
 inline unsigned bits(Mask m) {
-    return unsigned(_mm_movemask_ps(__m128(m)));
+    return lane_mask(Lanes(m));
+}
+
+inline Lanes magnitude(Lanes v) {
+    return v < 0 ? -v : v;
 }
 
 inline Lanes load(const float (&lanes)[4]) {
     Lanes v;
     std::memcpy(&v, lanes, sizeof v);
     return v;
-}
-
-inline Lanes magnitude(Lanes v) {
-    return v < 0 ? -v : v;
 }
 
 inline Lanes larger(Lanes a, Lanes b) {
