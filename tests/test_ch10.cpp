@@ -207,6 +207,51 @@ TEST_CASE("10.4 rays aimed exactly at a closed mesh's shared edges and vertices 
     CHECK(lost == 0);
 }
 
+TEST_CASE("10.4 axis-parallel rays with +0 and -0 components, in the planes of the tree's boxes, are never lost") {
+    // A cube cut into a 4 x 4 grid per face: every vertex coordinate is a multiple of 1/2,
+    // so the boxes of the tree lie in those planes. Rays along an axis, their other two
+    // components +0 or -0, start in those planes and between them: there the slab test
+    // computes 0 * inf, a NaN that must keep the box (a box lost there loses a hit).
+    SurfaceList list;
+    const MeshData data = subdivided_cube(Vec3(0), 2, 4);
+    list.add(Mesh(data));
+    rt::test::RaySet set;
+    int through_faces = 0;
+    for (int axis = 0; axis < 3; ++axis)
+        for (Real sign : {Real(1), Real(-1)})
+            for (int i = -4; i <= 4; ++i)
+                for (int j = -4; j <= 4; ++j)
+                    for (int zeros = 0; zeros < 4; ++zeros)
+                        for (Real start : {Real(-3), Real(0)}) {
+                            const int u = (axis + 1) % 3, v = (axis + 2) % 3;
+                            Vec3 o, d;
+                            o[axis] = sign * start;
+                            o[u] = Real(i) / 4;
+                            o[v] = Real(j) / 4;
+                            d[axis] = sign;
+                            d[u] = zeros & 1 ? Real(-0.0) : Real(0.0);
+                            d[v] = zeros & 2 ? Real(-0.0) : Real(0.0);
+                            set.add(Ray{o, d});
+                            set.add(Ray{o, d}, Interval{0.5, 3.5});
+                            through_faces += std::abs(i) < 4 && std::abs(j) < 4;
+                        }
+    CHECK(disagreements(list, set.rays, set.intervals, kStructures) == 0);
+    // And the answer itself: a ray inside the cube's outline meets a face ahead, whether it
+    // starts outside (at 3) or at the centre.
+    const Accel fast(list, AccelKind::fast);
+    int hits = 0;
+    for (std::size_t k = 0; k < set.rays.size(); k += 2) {
+        const Ray& r = set.rays[k];
+        const int axis = r.direction.x != 0 ? 0 : r.direction.y != 0 ? 1 : 2;
+        const Vec3 o = r.origin;
+        if (std::abs(o[(axis + 1) % 3]) < 1 && std::abs(o[(axis + 2) % 3]) < 1) {
+            HitRecord rec;
+            hits += fast.hit(list, r, Interval{}, rec) && rec.t == (o[axis] == 0 ? 1 : 2);
+        }
+    }
+    CHECK(hits == through_faces);
+}
+
 TEST_CASE("10.4 the chapter's scenes render the same image with every structure, bit for bit") {
     for (const char* name : {"spheres", "soup"}) {
         CAPTURE(name);

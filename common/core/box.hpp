@@ -27,10 +27,11 @@ struct Box {
 // (after Ize 2013), and a NaN from a ray lying in a slab's plane (0 * infinity) leaves that
 // slab's bounds alone. Chapter 10 derives it (exercise 10.1 is the same test); the grid and
 // the BSP clip rays to their box with it.
-inline bool clip_to_box(const Box& box, const Ray& ray, Interval& interval) {
+// inv_direction: 1 / ray.direction, when the caller has it already.
+inline bool clip_to_box(const Box& box, const Ray& ray, const Vec3& inv_direction, Interval& interval) {
     Real lo = interval.min, hi = interval.max;
     for (int a = 0; a < 3; ++a) {
-        const Real inv = Real(1) / ray.direction[a];
+        const Real inv = inv_direction[a];
         Real t0 = (box.min[a] - ray.origin[a]) * inv, t1 = (box.max[a] - ray.origin[a]) * inv;
         // The sign of 1/d orders the planes (-0 gives -inf); comparing t0 with t1 would not
         // when one of them is NaN.
@@ -44,8 +45,15 @@ inline bool clip_to_box(const Box& box, const Ray& ray, Interval& interval) {
     return true;
 }
 
+inline bool clip_to_box(const Box& box, const Ray& ray, Interval& interval) {
+    return clip_to_box(box, ray, Real(1) / ray.direction, interval);
+}
+
 // Might the ray meet the box for some t in the interval? A cull in front of meshes and
 // instances, so that a ray that passes far from them costs one test.
+inline bool might_hit(const Box& box, const Ray& ray, const Vec3& inv_direction, Interval interval) {
+    return clip_to_box(box, ray, inv_direction, interval);
+}
 inline bool might_hit(const Box& box, const Ray& ray, Interval interval) {
     return clip_to_box(box, ray, interval);
 }

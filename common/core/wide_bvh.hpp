@@ -13,6 +13,7 @@
 #include <immintrin.h>
 
 #include <bit>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -48,20 +49,27 @@ WideBvh<W> collapse(const FlatBvh& bvh);
 // rounded the way that moves them closer, the far planes from the one that moves them away.
 // The second is relative (a few float epsilons of the distance), and the entry distance is
 // lowered and the exit raised by kSlack of their size, more than all of them together.
+template <int W>
 struct WideRay {
     float origin_near[3], origin_far[3], inv[3];
-    bool near_hi[3];  // 1/d < 0: the near plane is the box's hi side
+    std::uint32_t near_offset[3], far_offset[3];  // where each axis's near and far planes are in a node
 
     static constexpr float kSlack = 0x1p-20f;  // 16 float epsilons
 
-    explicit WideRay(const Ray& ray) {
+    explicit WideRay(const Ray& ray) : WideRay(ray, Real(1) / ray.direction) {}
+
+    // inv_direction: 1 / ray.direction, when the caller has it already.
+    WideRay(const Ray& ray, const Vec3& inv_direction) {
         for (int a = 0; a < 3; ++a) {
-            const Real inv_d = Real(1) / ray.direction[a];
-            near_hi[a] = inv_d < 0;
-            inv[a] = float(inv_d);  // +-0 directions give +-inf, whose sign is kept
+            const bool near_hi = inv_direction[a] < 0;  // the near plane is the box's hi side
+            inv[a] = float(inv_direction[a]);           // +-0 directions give +-inf, whose sign is kept
             const float below = float_below(ray.origin[a]), above = float_above(ray.origin[a]);
-            origin_near[a] = near_hi[a] ? below : above;
-            origin_far[a] = near_hi[a] ? above : below;
+            origin_near[a] = near_hi ? below : above;
+            origin_far[a] = near_hi ? above : below;
+            const auto lo = std::uint32_t(offsetof(WideNode<W>, lo) + a * sizeof(float[W]));
+            const auto hi = std::uint32_t(offsetof(WideNode<W>, hi) + a * sizeof(float[W]));
+            near_offset[a] = near_hi ? hi : lo;
+            far_offset[a] = near_hi ? lo : hi;
         }
     }
 };
@@ -95,25 +103,48 @@ inline unsigned lane_mask(FloatLanes<8>::type m) {
 
 // Where the ray enters each child's box within [tmin, tmax] (float bounds, already rounded
 // outwards), lowered to be safe, in t; returns which children it enters (bit c for child c).
-template <int W>
-inline unsigned enter(const WideNode<W>& node, const WideRay& ray, float tmin, float tmax, float (&t)[W]) {
+//
+// kAhead: tmin >= 0, the usual case, and a cheaper one. Every distance that can decide the
+// answer is then >= 0 and computed to a few float epsilons *relative*, so only the exit
+// needs raising before the comparison (one multiply-add on the path from the node's
+// load to the next node's), and the entry is lowered for the caller off that path. A
+// distance that comes out negative is one whose exact value is negative too (rounding keeps
+// signs), so it can only lose to tmin.
+template <bool kAhead, int W>
+inline unsigned enter(const WideNode<W>& node, const WideRay<W>& ray, float tmin, float tmax, float (&t)[W]) {
     using F = typename FloatLanes<W>::type;
-    F lo = F{} + tmin, hi = F{} + tmax;
+    F near[3], far[3];
+    const char* base = reinterpret_cast<const char*>(&node);
     for (int a = 0; a < 3; ++a) {
         F n, f;
-        std::memcpy(&n, ray.near_hi[a] ? node.hi[a] : node.lo[a], sizeof n);
-        std::memcpy(&f, ray.near_hi[a] ? node.lo[a] : node.hi[a], sizeof f);
-        const F near = (n - ray.origin_near[a]) * ray.inv[a];
-        const F far = (f - ray.origin_far[a]) * ray.inv[a];
-        lo = near > lo ? near : lo;  // a NaN (0 * inf: the ray in a slab's plane) keeps the bound
-        hi = far < hi ? far : hi;
+        std::memcpy(&n, base + ray.near_offset[a], sizeof n);
+        std::memcpy(&f, base + ray.far_offset[a], sizeof f);
+        near[a] = (n - ray.origin_near[a]) * ray.inv[a];
+        far[a] = (f - ray.origin_far[a]) * ray.inv[a];
     }
-    const F abs_lo = lo < 0 ? -lo : lo, abs_hi = hi < 0 ? -hi : hi;
-    lo -= abs_lo * WideRay::kSlack;
+    // The largest entry and smallest exit, as a tree (shorter than a chain). A NaN (0 * inf:
+    // the ray lies in a slab's plane) makes `x > y ? x : y` give y: in the inner pair, at
+    // worst the other distance is dropped (the interval only grows); the outer pair has the
+    // bound that is never NaN second, so the NaN goes no further.
+    const F tmin_v = F{} + tmin, tmax_v = F{} + tmax;
+    const F lo_x = near[0] > tmin_v ? near[0] : tmin_v, lo_yz = near[1] > near[2] ? near[1] : near[2];
+    const F hi_x = far[0] < tmax_v ? far[0] : tmax_v, hi_yz = far[1] < far[2] ? far[1] : far[2];
+    F lo = lo_yz > lo_x ? lo_yz : lo_x;
+    F hi = hi_yz < hi_x ? hi_yz : hi_x;
     // The tiny absolute term covers products that underflowed to denormals.
-    hi += abs_hi * WideRay::kSlack + std::numeric_limits<float>::min();
-    std::memcpy(t, &lo, sizeof t);
-    return lane_mask(F(lo <= hi));
+    constexpr float tiny = std::numeric_limits<float>::min();
+    if constexpr (kAhead) {
+        const unsigned mask = lane_mask(F(lo <= hi * (1 + WideRay<W>::kSlack) + tiny));
+        lo *= 1 - WideRay<W>::kSlack;
+        std::memcpy(t, &lo, sizeof t);
+        return mask;
+    } else {
+        const F abs_lo = lo < 0 ? -lo : lo, abs_hi = hi < 0 ? -hi : hi;
+        lo -= abs_lo * WideRay<W>::kSlack;
+        hi += abs_hi * WideRay<W>::kSlack + tiny;
+        std::memcpy(t, &lo, sizeof t);
+        return lane_mask(F(lo <= hi));
+    }
 }
 
 // Both queries walk the tree the same way: the children a ray enters, nearest first, the
@@ -124,8 +155,8 @@ inline unsigned enter(const WideNode<W>& node, const WideRay& ray, float tmin, f
 //   entry lies beyond the best hit found since is skipped.
 // - Any hit (kAny true): the first leaf that returns true ends the search. Near first here
 //   too: a shadow ray's blocker is found sooner (Embree orders its occlusion rays as well).
-template <bool kAny, int W, class Leaf>
-bool traverse(const WideBvh<W>& bvh, const Ray& ray, Interval interval, Leaf&& leaf) {
+template <bool kAny, bool kAhead, int W, class Leaf>
+bool traverse_from(const WideBvh<W>& bvh, const WideRay<W>& r, Interval interval, Leaf&& leaf) {
     if (bvh.nodes.empty() && !bvh.root_is_leaf) return false;
     TallyScope tally;
     TraversalCount& count = tally.count;
@@ -133,8 +164,7 @@ bool traverse(const WideBvh<W>& bvh, const Ray& ray, Interval interval, Leaf&& l
         count.items += bvh.root_count;
         return leaf(0, bvh.root_count, interval);
     }
-    const WideRay r(ray);
-    const float tmin = float_below(interval.min);
+    const float tmin = kAhead ? std::max(0.0f, float_below(interval.min)) : float_below(interval.min);
     float tmax = float_above(widen_far(interval.max));
     struct Entry {
         std::uint32_t first, count;
@@ -155,11 +185,20 @@ bool traverse(const WideBvh<W>& bvh, const Ray& ray, Interval interval, Leaf&& l
         } else {
             const WideNode<W>& node = bvh.nodes[at.first];
             float t[W];
-            unsigned mask = enter(node, r, tmin, tmax, t);
+            unsigned mask = enter<kAhead>(node, r, tmin, tmax, t);
             count.nodes += W;
             if (mask != 0 && (mask & (mask - 1)) == 0) {  // one child entered: no stack
                 const int c = std::countr_zero(mask);
                 at = Entry{node.first[c], node.count[c], t[c]};
+                continue;
+            }
+            if (kAny && mask != 0) {
+                int c = std::countr_zero(mask);
+                at = Entry{node.first[c], node.count[c], t[c]};
+                for (mask &= mask - 1; mask != 0; mask &= mask - 1) {
+                    c = std::countr_zero(mask);
+                    stack[top++] = Entry{node.first[c], node.count[c], t[c]};
+                }
                 continue;
             }
             // The entered children, nearest first (insertion sort: there are few).
@@ -188,13 +227,19 @@ bool traverse(const WideBvh<W>& bvh, const Ray& ray, Interval interval, Leaf&& l
     }
 }
 
+template <bool kAny, int W, class Leaf>
+bool traverse(const WideBvh<W>& bvh, const WideRay<W>& ray, Interval interval, Leaf&& leaf) {
+    return interval.min >= 0 ? traverse_from<kAny, true>(bvh, ray, interval, leaf)
+                             : traverse_from<kAny, false>(bvh, ray, interval, leaf);
+}
+
 template <int W, class Leaf>
-bool closest_hit(const WideBvh<W>& bvh, const Ray& ray, Interval interval, Leaf&& leaf) {
+bool closest_hit(const WideBvh<W>& bvh, const WideRay<W>& ray, Interval interval, Leaf&& leaf) {
     return traverse<false>(bvh, ray, interval, leaf);
 }
 
 template <int W, class Leaf>
-bool any_hit(const WideBvh<W>& bvh, const Ray& ray, Interval interval, Leaf&& leaf) {
+bool any_hit(const WideBvh<W>& bvh, const WideRay<W>& ray, Interval interval, Leaf&& leaf) {
     return traverse<true>(bvh, ray, interval, leaf);
 }
 

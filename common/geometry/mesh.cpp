@@ -3,6 +3,7 @@
 #include "geometry/limits.hpp"
 
 #include <cmath>
+#include <optional>
 #include <stdexcept>
 
 namespace rt {
@@ -85,18 +86,38 @@ Mesh::Mesh(MeshData data) {
     accel_ = build_accel(*data_);
 }
 
+// A mesh query's view of the ray: 1/d once, for the mesh's box, the tree's boxes and the
+// triangles' shear. The shear is made at the first leaf the ray reaches: many rays that
+// come into a mesh's box reach none.
+struct MeshRay {
+    const Ray& ray;
+    Vec3 inv;
+    std::optional<WideRay<kMeshBvhWidth>> wide;
+    std::optional<RayShear> shear_;
+
+    // False when the ray misses the mesh's box: then nothing else is made.
+    MeshRay(const Ray& r, const Mesh& mesh, Interval interval) : ray(r), inv(Real(1) / r.direction) {
+        if (might_hit(mesh.box(), ray, inv, interval)) wide.emplace(ray, inv);
+    }
+
+    const RayShear& shear() {
+        if (!shear_) shear_.emplace(ray, inv);
+        return *shear_;
+    }
+};
+
 bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
     const MeshAccel& a = mesh.accel();
-    if (!might_hit(mesh.box(), ray, interval)) return false;
-    const RayShear shear(ray);
+    MeshRay r(ray, mesh, interval);
+    if (!r.wide) return false;
     const Real t_min = interval.min;
     Real best_t = interval.max;
     std::uint32_t best = kNone;
-    return closest_hit(a.wide, ray, interval, [&](std::uint32_t b, std::uint32_t, Interval& iv) {
+    return closest_hit(a.wide, *r.wide, interval, [&](std::uint32_t b, std::uint32_t, Interval& iv) {
         bool closer = false;
         // The whole block against the interval as it stands; a hit found on the way is kept
         // only if it is closer in the one order (lower index at equal t).
-        for_each_hit(a.blocks[b], &a.corners[4 * b], shear, ray, Interval{t_min, widen_far(iv.max)},
+        for_each_hit(a.blocks[b], &a.corners[4 * b], r.shear(), ray, Interval{t_min, widen_far(iv.max)},
                      [&](std::uint32_t index, const TriangleHit& h, const std::array<Vec3, 3>& corners) {
                          if (!(h.t <= best_t) || (h.t == best_t && index > best)) return false;
                          best_t = h.t;
@@ -111,11 +132,11 @@ bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
 }
 
 bool occluded(const Mesh& mesh, const Ray& ray, Interval interval) {
-    if (!might_hit(mesh.box(), ray, interval)) return false;
     const MeshAccel& a = mesh.accel();
-    const RayShear shear(ray);
-    return any_hit(a.wide, ray, interval, [&](std::uint32_t b, std::uint32_t, Interval& iv) {
-        return for_each_hit(a.blocks[b], &a.corners[4 * b], shear, ray, iv,
+    MeshRay r(ray, mesh, interval);
+    if (!r.wide) return false;
+    return any_hit(a.wide, *r.wide, interval, [&](std::uint32_t b, std::uint32_t, Interval& iv) {
+        return for_each_hit(a.blocks[b], &a.corners[4 * b], r.shear(), ray, iv,
                             [](std::uint32_t, const TriangleHit&, const std::array<Vec3, 3>&) { return true; });
     });
 }

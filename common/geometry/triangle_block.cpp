@@ -6,16 +6,18 @@
 
 namespace rt {
 
-RayShear::RayShear(const Ray& ray) {
+RayShear::RayShear(const Ray& ray, const Vec3& inv_direction) {
     const Vec3& d = ray.direction;
     const Vec3 ad = glm::abs(d);
     kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
     kx = (kz + 1) % 3;
     ky = (kx + 1) % 3;
     if (d[kz] < 0) std::swap(kx, ky);
-    sx = float(d[kx] / d[kz]);
-    sy = float(d[ky] / d[kz]);
-    sz = float(Real(1) / d[kz]);
+    // Exercise 3.2 divides; a product with 1/d is one rounding in Real away from its quotient,
+    // which the filter's margins cover (E counts 16 float roundings, the shear needs ~11).
+    sx = float(d[kx] * inv_direction[kz]);
+    sy = float(d[ky] * inv_direction[kz]);
+    sz = float(inv_direction[kz]);
     for (int a = 0; a < 3; ++a) origin[a] = float(ray.origin[a]);
     const Vec3 ao = glm::abs(ray.origin);
     origin_size = float_above(std::max({ao.x, ao.y, ao.z}));

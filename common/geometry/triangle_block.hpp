@@ -38,7 +38,9 @@ struct RayShear {
     int kx, ky, kz;
     float sx, sy, sz;
 
-    explicit RayShear(const Ray& ray);
+    explicit RayShear(const Ray& ray) : RayShear(ray, Real(1) / ray.direction) {}
+    // inv_direction: 1 / ray.direction, when the caller has it already.
+    RayShear(const Ray& ray, const Vec3& inv_direction);
 };
 
 namespace block_detail {
@@ -82,7 +84,7 @@ inline constexpr float u = 0x1p-24f;  // float's unit roundoff
 // A lane is dropped only when its edge functions disagree in sign by more than m, or when its
 // t is surely outside the interval: behind the origin beyond doubt, or, where det and T are
 // over 1024 times their error (so t is good to 2^-9), more than 2^-8 of t outside.
-inline unsigned candidates(const TriangleBlock& block, const RayShear& r, Interval interval) {
+[[gnu::always_inline]] inline unsigned candidates(const TriangleBlock& block, const RayShear& r, Interval interval) {
     using namespace block_detail;
     const int k[3] = {r.kx, r.ky, r.kz};
     Lanes x[3], y[3], z[3];  // corner v sheared: x[v], y[v]; z[v] along the ray's main axis
@@ -117,8 +119,9 @@ inline unsigned candidates(const TriangleBlock& block, const RayShear& r, Interv
     Mask out = Mask{};
     if (interval.min >= 0) out = (det_p > err_det) & (T_p + err_T < 0);
     const Mask sure = (det_p > 1024 * err_det) & (T_p > 1024 * err_T);
-    const Lanes t = T_p / det_p;
-    out |= sure & ((t * (1 - 0x1p-8f) > float(interval.max)) | (t * (1 + 0x1p-8f) < float(interval.min)));
+    // t = T / det compared without dividing: det_p > 0 wherever `sure` holds.
+    out |= sure &
+           ((T_p * (1 - 0x1p-8f) > det_p * float(interval.max)) | (T_p * (1 + 0x1p-8f) < det_p * float(interval.min)));
     return keep & ~bits(out);
 }
 
