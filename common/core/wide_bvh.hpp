@@ -155,8 +155,8 @@ inline unsigned enter(const WideNode<W>& node, const WideRay<W>& ray, float tmin
 //   entry lies beyond the best hit found since is skipped.
 // - Any hit (kAny true): the first leaf that returns true ends the search. Near first here
 //   too: a shadow ray's blocker is found sooner (Embree orders its occlusion rays as well).
-template <bool kAny, bool kAhead, int W, class Leaf>
-bool traverse_from(const WideBvh<W>& bvh, const WideRay<W>& r, Interval interval, Leaf&& leaf) {
+template <bool kAny, bool kAhead, int W, class Leaf, class Fetch>
+bool traverse_from(const WideBvh<W>& bvh, const WideRay<W>& r, Interval interval, Leaf&& leaf, Fetch&& fetch) {
     if (bvh.nodes.empty() && !bvh.root_is_leaf) return false;
     TallyScope tally;
     TraversalCount& count = tally.count;
@@ -187,6 +187,15 @@ bool traverse_from(const WideBvh<W>& bvh, const WideRay<W>& r, Interval interval
             float t[W];
             unsigned mask = enter<kAhead>(node, r, tmin, tmax, t);
             count.nodes += W;
+            for (unsigned m = mask; m != 0; m &= m - 1) {
+                const int c = std::countr_zero(m);
+                if (node.count[c] == 0) {
+                    const char* p = reinterpret_cast<const char*>(&bvh.nodes[node.first[c]]);
+                    for (int line = 0; line < int(sizeof(WideNode<W>)); line += 64) __builtin_prefetch(p + line);
+                } else {
+                    fetch(node.first[c]);
+                }
+            }
             if (mask != 0 && (mask & (mask - 1)) == 0) {  // one child entered: no stack
                 const int c = std::countr_zero(mask);
                 at = Entry{node.first[c], node.count[c], t[c]};
@@ -227,20 +236,20 @@ bool traverse_from(const WideBvh<W>& bvh, const WideRay<W>& r, Interval interval
     }
 }
 
-template <bool kAny, int W, class Leaf>
-bool traverse(const WideBvh<W>& bvh, const WideRay<W>& ray, Interval interval, Leaf&& leaf) {
-    return interval.min >= 0 ? traverse_from<kAny, true>(bvh, ray, interval, leaf)
-                             : traverse_from<kAny, false>(bvh, ray, interval, leaf);
+template <bool kAny, int W, class Leaf, class Fetch>
+bool traverse(const WideBvh<W>& bvh, const WideRay<W>& ray, Interval interval, Leaf&& leaf, Fetch&& fetch) {
+    return interval.min >= 0 ? traverse_from<kAny, true>(bvh, ray, interval, leaf, fetch)
+                             : traverse_from<kAny, false>(bvh, ray, interval, leaf, fetch);
 }
 
-template <int W, class Leaf>
-bool closest_hit(const WideBvh<W>& bvh, const WideRay<W>& ray, Interval interval, Leaf&& leaf) {
-    return traverse<false>(bvh, ray, interval, leaf);
+template <int W, class Leaf, class Fetch>
+bool closest_hit(const WideBvh<W>& bvh, const WideRay<W>& ray, Interval interval, Leaf&& leaf, Fetch&& fetch) {
+    return traverse<false>(bvh, ray, interval, leaf, fetch);
 }
 
-template <int W, class Leaf>
-bool any_hit(const WideBvh<W>& bvh, const WideRay<W>& ray, Interval interval, Leaf&& leaf) {
-    return traverse<true>(bvh, ray, interval, leaf);
+template <int W, class Leaf, class Fetch>
+bool any_hit(const WideBvh<W>& bvh, const WideRay<W>& ray, Interval interval, Leaf&& leaf, Fetch&& fetch) {
+    return traverse<true>(bvh, ray, interval, leaf, fetch);
 }
 
 }  // namespace rt

@@ -106,7 +106,7 @@ SpanList mesh_spans(const Mesh& mesh, const Ray& ray) {
                          return false;  // every crossing, not the first
                      });
         return false;
-    });
+    }, [&](std::uint32_t b) { prefetch(a.blocks[b]); });
     // The brute-force order (t, then triangle), so the result does not depend on the tree.
     std::sort(crossings.begin(), crossings.end(), [](const HitRecord& x, const HitRecord& y) {
         return x.t != y.t ? x.t < y.t : x.primitive < y.primitive;

@@ -128,7 +128,7 @@ bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
                          return false;
                      });
         return closer;
-    });
+    }, [&](std::uint32_t b) { prefetch(a.blocks[b]); });
 }
 
 bool occluded(const Mesh& mesh, const Ray& ray, Interval interval) {
@@ -138,7 +138,7 @@ bool occluded(const Mesh& mesh, const Ray& ray, Interval interval) {
     return any_hit(a.wide, *r.wide, interval, [&](std::uint32_t b, std::uint32_t, Interval& iv) {
         return for_each_hit(a.blocks[b], &a.corners[4 * b], r.shear(), ray, iv,
                             [](std::uint32_t, const TriangleHit&, const std::array<Vec3, 3>&) { return true; });
-    });
+    }, [&](std::uint32_t b) { prefetch(a.blocks[b]); });
 }
 
 HitRecord record(const Mesh& mesh, const Ray&, const MeshHit& h, SurfaceRef who) {

@@ -125,6 +125,12 @@ inline constexpr float u = 0x1p-24f;  // float's unit roundoff
     return keep & ~bits(out);
 }
 
+// Asks the memory system for a block that a search is about to test.
+inline void prefetch(const TriangleBlock& block) {
+    const char* p = reinterpret_cast<const char*>(&block);
+    for (std::size_t line = 0; line < sizeof block; line += 64) __builtin_prefetch(p + line);
+}
+
 // Calls f(triangle, hit, its corners) for each triangle of the block that exercise 3.2's
 // exact test finds in the interval, lane by lane, until f returns true; returns whether it
 // did. corners[lane] holds the lane's corners in Real.
