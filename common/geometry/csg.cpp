@@ -99,14 +99,17 @@ SpanList mesh_spans(const Mesh& mesh, const Ray& ray) {
     const MeshAccel& a = mesh.accel();
     std::vector<HitRecord> crossings;
     const RayShear shear(ray);
-    any_hit(a.wide, WideRay<kMeshBvhWidth>(ray), line, [&](std::uint32_t b, std::uint32_t, Interval& iv) {
-        for_each_hit(a.blocks[b], &a.corners[4 * b], shear, ray, iv,
-                     [&](std::uint32_t index, const TriangleHit& h, const std::array<Vec3, 3>& c) {
-                         crossings.push_back(record(mesh, ray, MeshHit{h, index, &c}, SurfaceRef{kNone, kNone}));
-                         return false;  // every crossing, not the first
-                     });
-        return false;
-    }, [&](std::uint32_t b) { prefetch(a.blocks[b]); });
+    any_hit(
+        a.wide, WideRay<kMeshBvhWidth>(ray), line,
+        [&](std::uint32_t b, std::uint32_t, Interval& iv) {
+            for_each_hit(a.blocks[b], &a.corners[4 * b], shear, ray, iv,
+                         [&](std::uint32_t index, const TriangleHit& h, const std::array<Vec3, 3>& c) {
+                             crossings.push_back(record(mesh, ray, MeshHit{h, index, &c}, SurfaceRef{kNone, kNone}));
+                             return false;  // every crossing, not the first
+                         });
+            return false;
+        },
+        [&](std::uint32_t b) { prefetch(a.blocks[b]); });
     // The brute-force order (t, then triangle), so the result does not depend on the tree.
     std::sort(crossings.begin(), crossings.end(), [](const HitRecord& x, const HitRecord& y) {
         return x.t != y.t ? x.t < y.t : x.primitive < y.primitive;

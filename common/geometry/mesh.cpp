@@ -113,32 +113,37 @@ bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
     const Real t_min = interval.min;
     Real best_t = interval.max;
     std::uint32_t best = kNone;
-    return closest_hit(a.wide, *r.wide, interval, [&](std::uint32_t b, std::uint32_t, Interval& iv) {
-        bool closer = false;
-        // The whole block against the interval as it stands; a hit found on the way is kept
-        // only if it is closer in the one order (lower index at equal t).
-        for_each_hit(a.blocks[b], &a.corners[4 * b], r.shear(), ray, Interval{t_min, widen_far(iv.max)},
-                     [&](std::uint32_t index, const TriangleHit& h, const std::array<Vec3, 3>& corners) {
-                         if (!(h.t <= best_t) || (h.t == best_t && index > best)) return false;
-                         best_t = h.t;
-                         best = index;
-                         result = MeshHit{h, index, &corners};
-                         iv.max = h.t;
-                         closer = true;
-                         return false;
-                     });
-        return closer;
-    }, [&](std::uint32_t b) { prefetch(a.blocks[b]); });
+    return closest_hit(
+        a.wide, *r.wide, interval,
+        [&](std::uint32_t b, std::uint32_t, Interval& iv) {
+            bool closer = false;
+            // The whole block against the interval as it stands; a hit found on the way is kept
+            // only if it is closer in the one order (lower index at equal t).
+            for_each_hit(a.blocks[b], &a.corners[4 * b], r.shear(), ray, Interval{t_min, widen_far(iv.max)},
+                         [&](std::uint32_t index, const TriangleHit& h, const std::array<Vec3, 3>& corners) {
+                             if (!(h.t <= best_t) || (h.t == best_t && index > best)) return false;
+                             best_t = h.t;
+                             best = index;
+                             result = MeshHit{h, index, &corners};
+                             iv.max = h.t;
+                             closer = true;
+                             return false;
+                         });
+            return closer;
+        },
+        [&](std::uint32_t b) { prefetch(a.blocks[b]); });
 }
 
 bool occluded(const Mesh& mesh, const Ray& ray, Interval interval) {
     const MeshAccel& a = mesh.accel();
     MeshRay r(ray, mesh, interval);
     if (!r.wide) return false;
-    return any_hit(a.wide, *r.wide, interval, [&](std::uint32_t b, std::uint32_t, Interval& iv) {
-        return for_each_hit(a.blocks[b], &a.corners[4 * b], r.shear(), ray, iv,
-                            [](std::uint32_t, const TriangleHit&, const std::array<Vec3, 3>&) { return true; });
-    }, [&](std::uint32_t b) { prefetch(a.blocks[b]); });
+    return any_hit(
+        a.wide, *r.wide, interval,
+        [&](std::uint32_t b, std::uint32_t, Interval& iv) {
+            return blocks_ray(a.blocks[b], &a.corners[4 * b], r.shear(), ray, iv);
+        },
+        [&](std::uint32_t b) { prefetch(a.blocks[b]); });
 }
 
 HitRecord record(const Mesh& mesh, const Ray&, const MeshHit& h, SurfaceRef who) {

@@ -70,8 +70,15 @@ inline constexpr float u = 0x1p-24f;  // float's unit roundoff
 
 }  // namespace block_detail
 
-// Bit i set for each lane i < block.count whose triangle the ray might hit for t in the
-// interval: every lane that exercise 3.2's test, run in Real, could accept, and a few more.
+// What the float pass says about each lane of a block: bit i of `maybe` for each lane
+// whose triangle the ray might hit for t in the interval (every one exercise 3.2's exact
+// test could accept, and a few more), and of `surely` for each whose hit is certain
+// beyond rounding (a subset of `maybe`).
+struct BlockLanes {
+    unsigned maybe = 0, surely = 0;
+};
+
+// The float pass over a block.
 //
 // It is the exercise's arithmetic in float, with a bound on how far each result can be from
 // the exact one (the usual forward error analysis, rounded up generously):
@@ -84,7 +91,7 @@ inline constexpr float u = 0x1p-24f;  // float's unit roundoff
 // A lane is dropped only when its edge functions disagree in sign by more than m, or when its
 // t is surely outside the interval: behind the origin beyond doubt, or, where det and T are
 // over 1024 times their error (so t is good to 2^-9), more than 2^-8 of t outside.
-[[gnu::always_inline]] inline unsigned candidates(const TriangleBlock& block, const RayShear& r, Interval interval) {
+[[gnu::always_inline]] inline BlockLanes classify(const TriangleBlock& block, const RayShear& r, Interval interval) {
     using namespace block_detail;
     const int k[3] = {r.kx, r.ky, r.kz};
     Lanes x[3], y[3], z[3];  // corner v sheared: x[v], y[v]; z[v] along the ray's main axis
@@ -105,8 +112,9 @@ inline constexpr float u = 0x1p-24f;  // float's unit roundoff
     const Lanes V = x[0] * y[2] - y[0] * x[2];
     const Lanes W = x[1] * y[0] - y[1] * x[0];
     const Mask inside = ((U >= -m) & (V >= -m) & (W >= -m)) | ((U <= m) & (V <= m) & (W <= m));
-    unsigned keep = bits(inside) & ((1u << block.count) - 1);
-    if (keep == 0) return 0;
+    const unsigned used = (1u << block.count) - 1;
+    const unsigned keep = bits(inside) & used;
+    if (keep == 0) return {};
 
     const Lanes za = r.sz * z[0], zb = r.sz * z[1], zc = r.sz * z[2];
     const Lanes det = U + V + W, T = U * za + V * zb + W * zc;
@@ -122,7 +130,22 @@ inline constexpr float u = 0x1p-24f;  // float's unit roundoff
     // t = T / det compared without dividing: det_p > 0 wherever `sure` holds.
     out |= sure &
            ((T_p * (1 - 0x1p-8f) > det_p * float(interval.max)) | (T_p * (1 + 0x1p-8f) < det_p * float(interval.min)));
-    return keep & ~bits(out);
+
+    // A certain hit: every edge function beyond twice its error bound with one sign (the
+    // exact test, whose own error is at most the bound, sees that sign too), and t inside
+    // the interval for every T and det within twice their bounds; 2^-20 covers the rounding
+    // of the comparison's own products.
+    const Lanes m2 = 2 * m;
+    const Mask signs = ((U > m2) & (V > m2) & (W > m2)) | ((U < -m2) & (V < -m2) & (W < -m2));
+    const Lanes det_lo = det_p - 2 * err_det, T_lo = T_p - 2 * err_T, T_hi = T_p + 2 * err_T;
+    Mask within = (det_lo > 0) & (T_lo > 0) & (T_hi * (1 + 0x1p-20f) < det_lo * float(interval.max));
+    if (interval.min > 0) within &= T_lo > (det_p + 2 * err_det) * float(interval.min) * (1 + 0x1p-20f);
+    return {keep & ~bits(out), bits(signs & within) & used};
+}
+
+// The lanes whose triangle the ray might hit (BlockLanes::maybe).
+inline unsigned candidates(const TriangleBlock& block, const RayShear& r, Interval interval) {
+    return classify(block, r, interval).maybe;
 }
 
 // Asks the memory system for a block that a search is about to test.
@@ -142,6 +165,21 @@ bool for_each_hit(const TriangleBlock& block, const std::array<Vec3, 3>* corners
         const auto& c = corners[lane];
         TriangleHit h;
         if (ray_triangle_watertight(ray, c[0], c[1], c[2], interval, h) && f(block.index[lane], h, c)) return true;
+    }
+    return false;
+}
+
+// Does any triangle of the block meet the ray in the interval? A hit the float pass finds
+// certain needs no exact test (an occlusion query asks for no t and no triangle); the others
+// the filter keeps go to exercise 3.2's test.
+inline bool blocks_ray(const TriangleBlock& block, const std::array<Vec3, 3>* corners, const RayShear& shear,
+                       const Ray& ray, Interval interval) {
+    const BlockLanes lanes = classify(block, shear, interval);
+    if (lanes.surely != 0) return true;
+    for (unsigned m = lanes.maybe; m != 0; m &= m - 1) {
+        const auto& c = corners[std::countr_zero(m)];
+        TriangleHit h;
+        if (ray_triangle_watertight(ray, c[0], c[1], c[2], interval, h)) return true;
     }
     return false;
 }
