@@ -210,6 +210,13 @@ bool traverse_from(const WideBvh<W>& bvh, const WideRay<W>& r, Interval interval
                 }
                 continue;
             }
+            if (std::popcount(mask) == 2) {  // the commonest case after one: no sort
+                int c0 = std::countr_zero(mask), c1 = std::countr_zero(mask & (mask - 1));
+                if (t[c1] < t[c0]) std::swap(c0, c1);
+                stack[top++] = Entry{node.first[c1], node.count[c1], t[c1]};
+                at = Entry{node.first[c0], node.count[c0], t[c0]};
+                continue;
+            }
             // The entered children, nearest first (insertion sort: there are few).
             int order[W], n = 0;
             for (; mask != 0; mask &= mask - 1) {
