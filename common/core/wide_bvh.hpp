@@ -147,14 +147,18 @@ inline unsigned enter(const WideNode<W>& node, const WideRay<W>& ray, float tmin
     }
 }
 
-// Both queries walk the tree the same way: the children a ray enters, nearest first, the
+// Both queries walk the tree the same way: the children a ray enters, one followed and the
 // others on a stack with their entry distances. A leaf is tested whole, leaf(first, count,
-// interval): the caller keeps its items together (geometry/triangle_block.hpp).
-// - The closest hit (kAny false), as closest_hit() in core/bvh.hpp: leaf narrows
-//   interval.max and returns true when it finds a closer hit, and a postponed child whose
-//   entry lies beyond the best hit found since is skipped.
-// - Any hit (kAny true): the first leaf that returns true ends the search. Near first here
-//   too: a shadow ray's blocker is found sooner (Embree orders its occlusion rays as well).
+// interval): the caller keeps its items together (geometry/triangle_block.hpp). As soon as
+// a child is known to be entered its memory is asked for: a node here, a leaf through
+// fetch(first), so that it is on its way while the search goes on elsewhere (on a big mesh
+// each visit can be a trip to memory).
+// - The closest hit (kAny false), as closest_hit() in core/bvh.hpp: nearest child first;
+//   leaf narrows interval.max and returns true when it finds a closer hit, and a postponed
+//   child whose entry lies beyond the best hit found since is skipped.
+// - Any hit (kAny true): the first leaf that returns true ends the search. Children go in
+//   slot order: sorting them measured slower than the blockers it finds sooner.
+// kAhead: interval.min >= 0, which lets enter() take its cheaper form.
 template <bool kAny, bool kAhead, int W, class Leaf, class Fetch>
 bool traverse_from(const WideBvh<W>& bvh, const WideRay<W>& r, Interval interval, Leaf&& leaf, Fetch&& fetch) {
     if (bvh.nodes.empty() && !bvh.root_is_leaf) return false;
