@@ -168,7 +168,7 @@ bool traverse_from(const WideBvh<W>& bvh, const WideRay<W>& r, Interval interval
         count.items += bvh.root_count;
         return leaf(0, bvh.root_count, interval);
     }
-    const float tmin = kAhead ? std::max(0.0f, float_below(interval.min)) : float_below(interval.min);
+    const float tmin = float_below(interval.min);  // >= 0 when interval.min is
     float tmax = float_above(widen_far(interval.max));
     struct Entry {
         std::uint32_t first, count;
@@ -200,36 +200,31 @@ bool traverse_from(const WideBvh<W>& bvh, const WideRay<W>& r, Interval interval
                     fetch(node.first[c]);
                 }
             }
-            if (mask != 0 && (mask & (mask - 1)) == 0) {  // one child entered: no stack
-                const int c = std::countr_zero(mask);
-                at = Entry{node.first[c], node.count[c], t[c]};
-                continue;
-            }
-            if (kAny && mask != 0) {
-                int c = std::countr_zero(mask);
-                at = Entry{node.first[c], node.count[c], t[c]};
-                for (mask &= mask - 1; mask != 0; mask &= mask - 1) {
-                    c = std::countr_zero(mask);
-                    stack[top++] = Entry{node.first[c], node.count[c], t[c]};
+            if (mask != 0) {
+                if (kAny || (mask & (mask - 1)) == 0) {  // slot order: the first followed, the rest pushed
+                    int c = std::countr_zero(mask);
+                    at = Entry{node.first[c], node.count[c], t[c]};
+                    for (mask &= mask - 1; mask != 0; mask &= mask - 1) {
+                        c = std::countr_zero(mask);
+                        stack[top++] = Entry{node.first[c], node.count[c], t[c]};
+                    }
+                    continue;
                 }
-                continue;
-            }
-            if (std::popcount(mask) == 2) {  // the commonest case after one: no sort
-                int c0 = std::countr_zero(mask), c1 = std::countr_zero(mask & (mask - 1));
-                if (t[c1] < t[c0]) std::swap(c0, c1);
-                stack[top++] = Entry{node.first[c1], node.count[c1], t[c1]};
-                at = Entry{node.first[c0], node.count[c0], t[c0]};
-                continue;
-            }
-            // The entered children, nearest first (insertion sort: there are few).
-            int order[W], n = 0;
-            for (; mask != 0; mask &= mask - 1) {
-                const int c = std::countr_zero(mask);
-                int j = n++;
-                for (; j > 0 && t[order[j - 1]] > t[c]; --j) order[j] = order[j - 1];
-                order[j] = c;
-            }
-            if (n != 0) {
+                if (std::popcount(mask) == 2) {  // the commonest case after one: no sort
+                    int c0 = std::countr_zero(mask), c1 = std::countr_zero(mask & (mask - 1));
+                    if (t[c1] < t[c0]) std::swap(c0, c1);
+                    stack[top++] = Entry{node.first[c1], node.count[c1], t[c1]};
+                    at = Entry{node.first[c0], node.count[c0], t[c0]};
+                    continue;
+                }
+                // Nearest first (insertion sort: there are few), all but the nearest pushed.
+                int order[W], n = 0;
+                for (; mask != 0; mask &= mask - 1) {
+                    const int c = std::countr_zero(mask);
+                    int j = n++;
+                    for (; j > 0 && t[order[j - 1]] > t[c]; --j) order[j] = order[j - 1];
+                    order[j] = c;
+                }
                 for (int i = n - 1; i > 0; --i) {
                     const int c = order[i];
                     stack[top++] = Entry{node.first[c], node.count[c], t[c]};

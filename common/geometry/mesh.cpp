@@ -95,7 +95,7 @@ struct MeshRay {
     std::optional<WideRay<kMeshBvhWidth>> wide;
     std::optional<RayShear> shear_;
 
-    // False when the ray misses the mesh's box: then nothing else is made.
+    // `wide` stays empty when the ray misses the mesh's box: then nothing else is made.
     MeshRay(const Ray& r, const Mesh& mesh, Interval interval) : ray(r), inv(Real(1) / r.direction) {
         if (might_hit(mesh.box(), ray, inv, interval)) wide.emplace(ray, inv);
     }

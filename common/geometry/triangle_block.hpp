@@ -4,7 +4,8 @@
 // the watertight test's arithmetic (exercise 3.2) on all four lanes and keeps every
 // triangle that the exact test might accept, with margins that bound float's rounding.
 // The triangles it keeps are then decided by ray_triangle_watertight itself, in Real, so
-// the hits are exactly brute force's.
+// the hits are exactly brute force's; only an occlusion query, which needs no t, takes a
+// hit the float pass proves certain without the exact test (blocks_ray).
 #include "core/ray.hpp"
 #include "core/wide_bvh.hpp"
 #include "geometry/triangle.hpp"
@@ -154,19 +155,25 @@ inline void prefetch(const TriangleBlock& block) {
     for (std::size_t line = 0; line < sizeof block; line += 64) __builtin_prefetch(p + line);
 }
 
-// Calls f(triangle, hit, its corners) for each triangle of the block that exercise 3.2's
-// exact test finds in the interval, lane by lane, until f returns true; returns whether it
-// did. corners[lane] holds the lane's corners in Real.
+// for_each_hit calls f(triangle, hit, its corners) for each triangle of the block that
+// exercise 3.2's exact test finds in the interval, lane by lane, until f returns true, and
+// returns whether it did; exact_hits does the same for the lanes given (bit i for lane i).
+// corners[lane] holds the lane's corners in Real.
 template <class F>
-bool for_each_hit(const TriangleBlock& block, const std::array<Vec3, 3>* corners, const RayShear& shear, const Ray& ray,
-                  Interval interval, F&& f) {
-    for (unsigned m = candidates(block, shear, interval); m != 0; m &= m - 1) {
-        const int lane = std::countr_zero(m);
+bool exact_hits(unsigned lanes, const TriangleBlock& block, const std::array<Vec3, 3>* corners, const Ray& ray,
+                Interval interval, F&& f) {
+    for (; lanes != 0; lanes &= lanes - 1) {
+        const int lane = std::countr_zero(lanes);
         const auto& c = corners[lane];
         TriangleHit h;
         if (ray_triangle_watertight(ray, c[0], c[1], c[2], interval, h) && f(block.index[lane], h, c)) return true;
     }
     return false;
+}
+template <class F>
+bool for_each_hit(const TriangleBlock& block, const std::array<Vec3, 3>* corners, const RayShear& shear, const Ray& ray,
+                  Interval interval, F&& f) {
+    return exact_hits(candidates(block, shear, interval), block, corners, ray, interval, f);
 }
 
 // Does any triangle of the block meet the ray in the interval? A hit the float pass finds
@@ -175,13 +182,9 @@ bool for_each_hit(const TriangleBlock& block, const std::array<Vec3, 3>* corners
 inline bool blocks_ray(const TriangleBlock& block, const std::array<Vec3, 3>* corners, const RayShear& shear,
                        const Ray& ray, Interval interval) {
     const BlockLanes lanes = classify(block, shear, interval);
-    if (lanes.surely != 0) return true;
-    for (unsigned m = lanes.maybe; m != 0; m &= m - 1) {
-        const auto& c = corners[std::countr_zero(m)];
-        TriangleHit h;
-        if (ray_triangle_watertight(ray, c[0], c[1], c[2], interval, h)) return true;
-    }
-    return false;
+    return lanes.surely != 0 ||
+           exact_hits(lanes.maybe, block, corners, ray, interval,
+                      [](std::uint32_t, const TriangleHit&, const std::array<Vec3, 3>&) { return true; });
 }
 
 // Triangles packed four to a block in the order given.
