@@ -1,5 +1,6 @@
 #include "core/wide_bvh.hpp"
 
+#include <array>
 #include <limits>
 
 namespace rt {
@@ -11,26 +12,96 @@ float half_area(const BvhNode& n) {
     return x * y + y * z + z * x;
 }
 
-// Fills wide node `at` from binary inner node `b`: its two children, then, while there is
-// room, the inner child of largest area replaced by its own two children (the one most rays
-// would open next).
+// Which binary nodes become each wide node's children, chosen to make the expected number
+// of node visits least (Ylitie, Karras and Laine 2017, without their leaf choice: a
+// binary leaf stays a leaf). A ray visits a node with a probability that grows with its
+// box's area, so the cost of a tree is the sum of its wide nodes' areas, and for every
+// binary node n and k = 1..W the cheapest way to hang n's subtree from at most k slots of
+// its parent is found bottom-up:
+//   roots(n, 1) = n itself: a wide node (area(n) + split(n, W)), or a leaf;
+//   roots(n, k) = the cheaper of n itself and split(n, k), where
+//   split(n, k) = min over j of roots(left, j) + roots(right, k - j).
+// Opening the largest child first until W, top-down, fills the nodes at the top but leaves
+// a crowd of nodes with two or three children above the leaves; this fills both.
 template <int W>
-void fill(const FlatBvh& bvh, std::uint32_t b, WideBvh<W>& out, std::uint32_t at) {
-    std::uint32_t kids[W] = {bvh.nodes[b].first, bvh.nodes[b].first + 1};
-    int n = 2;
-    while (n < W) {
-        int open = -1;
-        for (int i = 0; i < n; ++i)
-            if (!bvh.nodes[kids[i]].leaf() &&
-                (open < 0 || half_area(bvh.nodes[kids[i]]) > half_area(bvh.nodes[kids[open]])))
-                open = i;
-        if (open < 0) break;
-        const std::uint32_t first = bvh.nodes[kids[open]].first;
-        kids[open] = first;
-        kids[n++] = first + 1;
+struct Gather {
+    const FlatBvh& bvh;
+    std::vector<std::array<float, W + 1>> cost;      // cost[n][k]: roots(n, k); [0] unused
+    std::vector<std::array<std::uint8_t, W + 1>> j;  // split(n, k)'s j, or 0 where n itself is cheaper
+
+    explicit Gather(const FlatBvh& b) : bvh(b), cost(b.nodes.size()), j(b.nodes.size()) {}
+
+    // Bottom-up: children are numbered after their parent (core/bvh.cpp), so a reverse
+    // sweep meets them first, with no recursion.
+    void run() {
+        for (std::size_t n = bvh.nodes.size(); n-- > 0;) {
+            const BvhNode& node = bvh.nodes[n];
+            auto& c = cost[n];
+            if (node.leaf()) {
+                c.fill(0);
+                j[n].fill(0);
+                continue;
+            }
+            const auto& l = cost[node.first];
+            const auto& r = cost[node.first + 1];
+            float split[W + 1];
+            std::uint8_t at[W + 1] = {};
+            for (int k = 2; k <= W; ++k) {
+                split[k] = std::numeric_limits<float>::infinity();
+                for (int i = 1; i < k; ++i)
+                    if (l[i] + r[k - i] < split[k]) {
+                        split[k] = l[i] + r[k - i];
+                        at[k] = std::uint8_t(i);
+                    }
+            }
+            const float self = half_area(node) + split[W];
+            c[1] = self;
+            j[n][1] = 0;
+            for (int k = 2; k <= W; ++k) {
+                c[k] = split[k] < self ? split[k] : self;
+                j[n][k] = split[k] < self ? at[k] : 0;
+            }
+        }
     }
+
+    // The binary nodes that hang subtree n from at most k slots.
+    void collect(std::uint32_t n, int k, std::uint32_t* out, int& count) const {
+        if (j[n][k] == 0) {
+            out[count++] = n;
+            return;
+        }
+        const std::uint32_t left = bvh.nodes[n].first;
+        collect(left, j[n][k], out, count);
+        collect(left + 1, k - j[n][k], out, count);
+    }
+
+    int kids(std::uint32_t n, std::uint32_t (&out)[W]) const {
+        int count = 0;
+        const std::uint32_t left = bvh.nodes[n].first;
+        const int i = j_split(n);
+        collect(left, i, out, count);
+        collect(left + 1, W - i, out, count);
+        return count;
+    }
+
+    // The j of split(n, W): where n is a wide node, its W slots shared between its children.
+    int j_split(std::uint32_t n) const {
+        const auto& l = cost[bvh.nodes[n].first];
+        const auto& r = cost[bvh.nodes[n].first + 1];
+        int best = 1;
+        for (int i = 2; i < W; ++i)
+            if (l[i] + r[W - i] < l[best] + r[W - best]) best = i;
+        return best;
+    }
+};
+
+// Writes wide node `at` for binary node `b`, its inner children after it, depth first.
+template <int W>
+void emit(const FlatBvh& bvh, const Gather<W>& g, std::uint32_t b, WideBvh<W>& out, std::uint32_t at) {
     WideNode<W> node{};
     constexpr float inf = std::numeric_limits<float>::infinity();
+    std::uint32_t kids[W];
+    const int n = g.kids(b, kids);
     for (int c = 0; c < W; ++c)
         for (int a = 0; a < 3; ++a) {
             node.lo[a][c] = c < n ? bvh.nodes[kids[c]].lo[a] : inf;
@@ -44,7 +115,7 @@ void fill(const FlatBvh& bvh, std::uint32_t b, WideBvh<W>& out, std::uint32_t at
         } else {
             node.first[c] = std::uint32_t(out.nodes.size());
             out.nodes.emplace_back();
-            fill(bvh, kids[c], out, node.first[c]);
+            emit(bvh, g, kids[c], out, node.first[c]);
         }
     }
     out.nodes[at] = node;
@@ -61,9 +132,11 @@ WideBvh<W> collapse(const FlatBvh& bvh) {
         out.root_count = bvh.nodes[0].count;
         return out;
     }
+    Gather<W> g(bvh);
+    g.run();
     out.nodes.reserve(bvh.nodes.size() / (W - 1) + 1);
     out.nodes.emplace_back();
-    fill(bvh, 0, out, 0);
+    emit(bvh, g, 0, out, 0);
     return out;
 }
 
