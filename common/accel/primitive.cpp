@@ -56,7 +56,7 @@ bool hit_closer(const SurfaceList& surfaces, Primitive p, const Ray& ray, Interv
     TriangleHit h;
     if (!ray_triangle_watertight(ray, c.a, c.b, c.c, Interval{interval.min, widen_far(interval.max)}, h)) return false;
     if (!closer(h.t, s.id, p.triangle, best)) return false;
-    best = record(mesh, ray, MeshHit{h, p.triangle}, SurfaceRef{s.id, s.material});
+    best = record(mesh, ray, MeshHit{h, p.triangle, std::nullopt}, SurfaceRef{s.id, s.material});
     return true;
 }
 

@@ -102,9 +102,9 @@ SpanList mesh_spans(const Mesh& mesh, const Ray& ray) {
     any_hit(
         a.wide, WideRay<kMeshBvhWidth>(ray), line,
         [&](std::uint32_t b, std::uint32_t, Interval& iv) {
-            for_each_hit(a.blocks[b], &a.corners[4 * b], shear, ray, iv,
+            for_each_hit(a.blocks[b], a.corners_of(b), shear, ray, iv,
                          [&](std::uint32_t index, const TriangleHit& h, const std::array<Vec3, 3>& c) {
-                             crossings.push_back(record(mesh, ray, MeshHit{h, index, &c}, SurfaceRef{kNone, kNone}));
+                             crossings.push_back(record(mesh, ray, MeshHit{h, index, c}, SurfaceRef{kNone, kNone}));
                              return false;  // every crossing, not the first
                          });
             return false;

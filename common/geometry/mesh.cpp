@@ -2,6 +2,7 @@
 
 #include "geometry/limits.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <optional>
 #include <stdexcept>
@@ -45,20 +46,24 @@ std::shared_ptr<const MeshAccel> build_accel(const MeshData& d) {
     a->wide = collapse<kMeshBvhWidth>(bvh);
     const std::size_t leaves = (bvh.nodes.size() + 1) / 2;  // every inner node has two children
     a->blocks.reserve(leaves);
-    a->corners.reserve(4 * leaves);
     // Each leaf's triangles into a block, and the leaf renumbered to it.
     const auto block = [&](std::uint32_t first, std::uint32_t count) {
         a->blocks.push_back(pack(std::span(bvh.items).subspan(first, count), d.positions.data(), d.triangles.data()));
-        for (std::uint32_t t : a->blocks.back().index) {
-            const auto& c = d.triangles[t];
-            a->corners.push_back({d.positions[c[0]], d.positions[c[1]], d.positions[c[2]]});
-        }
         return std::uint32_t(a->blocks.size() - 1);
     };
     if (a->wide.root_is_leaf) block(0, a->wide.root_count);
     for (auto& node : a->wide.nodes)
         for (int c = 0; c < kMeshBvhWidth; ++c)
             if (node.count[c] != 0) node.first[c] = block(node.first[c], node.count[c]);
+    // The Real corners, unless float holds every one of them.
+    if (std::any_of(a->blocks.begin(), a->blocks.end(), [](const TriangleBlock& b) { return !b.exact; })) {
+        a->corners.reserve(4 * a->blocks.size());
+        for (const TriangleBlock& b : a->blocks)
+            for (std::uint32_t t : b.index) {
+                const auto& c = d.triangles[t];
+                a->corners.push_back({d.positions[c[0]], d.positions[c[1]], d.positions[c[2]]});
+            }
+    }
     return a;
 }
 
@@ -119,12 +124,12 @@ bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
             bool closer = false;
             // The whole block against the interval as it stands; a hit found on the way is kept
             // only if it is closer in the one order (lower index at equal t).
-            for_each_hit(a.blocks[b], &a.corners[4 * b], r.shear(), ray, Interval{t_min, widen_far(iv.max)},
+            for_each_hit(a.blocks[b], a.corners_of(b), r.shear(), ray, Interval{t_min, widen_far(iv.max)},
                          [&](std::uint32_t index, const TriangleHit& h, const std::array<Vec3, 3>& corners) {
                              if (!(h.t <= best_t) || (h.t == best_t && index > best)) return false;
                              best_t = h.t;
                              best = index;
-                             result = MeshHit{h, index, &corners};
+                             result = MeshHit{h, index, corners};
                              iv.max = h.t;
                              closer = true;
                              return false;
@@ -141,7 +146,7 @@ bool occluded(const Mesh& mesh, const Ray& ray, Interval interval) {
     return any_hit(
         a.wide, *r.wide, interval,
         [&](std::uint32_t b, std::uint32_t, Interval& iv) {
-            return blocks_ray(a.blocks[b], &a.corners[4 * b], r.shear(), ray, iv);
+            return blocks_ray(a.blocks[b], a.corners_of(b), r.shear(), ray, iv);
         },
         [&](std::uint32_t b) { prefetch(a.blocks[b]); });
 }

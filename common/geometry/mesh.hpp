@@ -8,6 +8,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -37,9 +38,10 @@ void validate(const MeshData& mesh, const std::string& what);
 struct MeshHit {
     TriangleHit triangle;
     std::uint32_t index;
-    // Its corners, when the search has them at hand (MeshAccel::corners): the record then
-    // reads them there instead of through the index arrays, two cache misses on a big mesh.
-    const std::array<Vec3, 3>* corners = nullptr;
+    // Its corners, when the search had them at hand (a block's floats or MeshAccel::corners):
+    // the record then takes them from here instead of through the index arrays, two trips
+    // to memory on a big mesh.
+    std::optional<std::array<Vec3, 3>> corners;
 };
 
 // How many children a node of a mesh's BVH has: eight floats are one AVX register, so a
@@ -52,7 +54,13 @@ inline constexpr int kMeshBvhWidth = 8;
 struct MeshAccel {
     WideBvh<kMeshBvhWidth> wide;  // a leaf child's `first` is its block's number
     std::vector<TriangleBlock> blocks;
-    std::vector<std::array<Vec3, 3>> corners;  // corners[4 b + lane]: the exact test's, in Real
+    // corners[4 b + lane]: the exact test's, in Real; empty when every block holds its own
+    // exactly (TriangleBlock::exact).
+    std::vector<std::array<Vec3, 3>> corners;
+
+    const std::array<Vec3, 3>* corners_of(std::uint32_t block) const {
+        return corners.empty() ? nullptr : corners.data() + 4 * std::size_t(block);
+    }
 
     std::size_t memory_bytes() const {
         return wide.memory_bytes() + blocks.size() * sizeof(TriangleBlock) + corners.size() * sizeof(corners[0]);

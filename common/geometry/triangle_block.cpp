@@ -27,6 +27,7 @@ TriangleBlock pack(std::span<const std::uint32_t> triangles, const Vec3* positio
                    const std::array<std::uint32_t, 3>* corners) {
     TriangleBlock block;
     block.count = std::uint32_t(triangles.size());
+    block.exact = true;
     for (int lane = 0; lane < 4; ++lane) {
         // Unused lanes repeat the first triangle: finite values, masked off by count.
         const std::uint32_t t = triangles[std::size_t(lane) < triangles.size() ? std::size_t(lane) : 0];
@@ -36,6 +37,7 @@ TriangleBlock pack(std::span<const std::uint32_t> triangles, const Vec3* positio
             for (int a = 0; a < 3; ++a) {
                 const Real c = positions[corners[t][std::size_t(v)]][a];
                 block.p[v][a][lane] = float(c);
+                block.exact = block.exact && round_to_float(c) == c;
                 size = std::max(size, std::abs(c));
             }
         block.size[lane] = float_above(size);

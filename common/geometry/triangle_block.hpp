@@ -21,14 +21,24 @@
 namespace rt {
 
 // Four triangles side by side, in float: a block is three cache lines, the size Embree's
-// leaves have. The exact test reads the Real corners from a second array in the same order
-// (MeshAccel::corners), for the few lanes the filter keeps.
+// leaves have. The exact test needs the corners in Real. Where float holds them exactly
+// (a mesh read from a file: OBJ coordinates are read as floats) the block's own are
+// they, already in cache; otherwise they are read from a second array in the same order
+// (MeshAccel::corners), a trip to memory on a big mesh.
 struct alignas(64) TriangleBlock {
     float p[3][3][4];         // p[corner][axis][lane]
     float size[4];            // the largest |coordinate| of the lane's corners, rounded up
     std::uint32_t index[4];   // each lane's triangle number
     std::uint32_t count = 0;  // lanes in use, from 0
+    bool exact = false;       // p holds every corner exactly
 };
+
+// A lane's corners in Real, from the block's floats (exact: see TriangleBlock::exact).
+inline std::array<Vec3, 3> lane_corners(const TriangleBlock& block, int lane) {
+    std::array<Vec3, 3> c;
+    for (int v = 0; v < 3; ++v) c[std::size_t(v)] = Vec3(block.p[v][0][lane], block.p[v][1][lane], block.p[v][2][lane]);
+    return c;
+}
 
 // The watertight test's view of a ray, in float, once per ray instead of once per triangle:
 // the axis where the direction is largest becomes z, and the shear that makes the ray point
@@ -158,13 +168,14 @@ inline void prefetch(const TriangleBlock& block) {
 // for_each_hit calls f(triangle, hit, its corners) for each triangle of the block that
 // exercise 3.2's exact test finds in the interval, lane by lane, until f returns true, and
 // returns whether it did; exact_hits does the same for the lanes given (bit i for lane i).
-// corners[lane] holds the lane's corners in Real.
+// corners[lane] holds the lane's corners in Real; it is read only for a block that is not
+// exact, and may be null for one that is.
 template <class F>
 bool exact_hits(unsigned lanes, const TriangleBlock& block, const std::array<Vec3, 3>* corners, const Ray& ray,
                 Interval interval, F&& f) {
     for (; lanes != 0; lanes &= lanes - 1) {
         const int lane = std::countr_zero(lanes);
-        const auto& c = corners[lane];
+        const std::array<Vec3, 3> c = block.exact ? lane_corners(block, lane) : corners[lane];
         TriangleHit h;
         if (ray_triangle_watertight(ray, c[0], c[1], c[2], interval, h) && f(block.index[lane], h, c)) return true;
     }
