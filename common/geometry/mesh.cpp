@@ -113,6 +113,7 @@ struct MeshRay {
 
 bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
     const MeshAccel& a = mesh.accel();
+    interval = in_registers(interval);
     MeshRay r(ray, mesh, interval);
     if (!r.wide) return false;
     const Real t_min = interval.min;
@@ -141,6 +142,7 @@ bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
 
 bool occluded(const Mesh& mesh, const Ray& ray, Interval interval) {
     const MeshAccel& a = mesh.accel();
+    interval = in_registers(interval);
     MeshRay r(ray, mesh, interval);
     if (!r.wide) return false;
     return any_hit(
