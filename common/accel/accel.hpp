@@ -14,6 +14,7 @@
 #include "accel/fast_bvh.hpp"
 #include "accel/grid.hpp"
 #include "accel/primitive.hpp"
+#include "core/dispatch.hpp"
 
 #include <optional>
 #include <string>
@@ -61,10 +62,10 @@ public:
     Accel(const SurfaceList& surfaces, AccelKind kind);
 
     bool hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
-        return std::visit([&](const auto& a) { return a.hit(surfaces, ray, interval, rec); }, impl_);
+        return dispatch(impl_, [&](const auto& a) { return a.hit(surfaces, ray, interval, rec); });
     }
     bool occluded(const SurfaceList& surfaces, const Ray& ray, Interval interval) const {
-        return std::visit([&](const auto& a) { return a.occluded(surfaces, ray, interval); }, impl_);
+        return dispatch(impl_, [&](const auto& a) { return a.occluded(surfaces, ray, interval); });
     }
     const AccelInfo& info() const { return info_; }
 

@@ -1,7 +1,8 @@
 #pragma once
 // A shape is geometry only: one of a closed set of plain structs. Queries on a Shape are a
-// switch over that set (std::visit), not a virtual call through a pointer, so the compiler
-// can inline each kind's test into the loop that calls it.
+// switch over that set (dispatch, core/dispatch.hpp), not a virtual call through a pointer,
+// so the compiler can inline each kind's test into the loop that calls it.
+#include "core/dispatch.hpp"
 #include "geometry/csg.hpp"
 #include "geometry/cuboid.hpp"
 #include "geometry/instance.hpp"
@@ -49,7 +50,7 @@ inline bool hit_record(const Sphere& sphere, const Ray& ray, Interval interval, 
 }
 
 inline bool hit_record(const Shape& shape, const Ray& ray, Interval interval, SurfaceRef who, HitRecord& rec) {
-    return std::visit([&](const auto& s) { return hit_record(s, ray, interval, who, rec); }, shape);
+    return dispatch(shape, [&](const auto& s) { return hit_record(s, ray, interval, who, rec); });
 }
 
 // Any hit in the interval: what a shadow ray asks. For most shapes that is their own test;
@@ -66,7 +67,7 @@ inline bool occluded(const Sphere& sphere, const Ray& ray, Interval interval) {
 }
 
 inline bool occluded(const Shape& shape, const Ray& ray, Interval interval) {
-    return std::visit([&](const auto& s) { return occluded(s, ray, interval); }, shape);
+    return dispatch(shape, [&](const auto& s) { return occluded(s, ray, interval); });
 }
 
 // Whether anything in the shape moves (chapter 18): only then do rays need a time.
