@@ -2,7 +2,8 @@
 // triangles, one ray at a time on each side (rtcIntersect1 / rtcOccluded1), on 1 and 2
 // threads, measured in the same run. Built only when Debian's libembree-dev is installed.
 //
-//   build/release/bin/bench_embree [--rounds N] [--size S] [--no-procedural] [--only TEXT] [MESH.obj ...]
+//   build/release/bin/bench_embree [--rounds N] [--size S] [--no-procedural] [--only TEXT] [--by-class]
+//                                   [MESH.obj ...]
 //
 // Inputs: a terrain of ~10^5 and one of ~10^6 triangles, a soup of 10^6 triangles, and every
 // OBJ given; --only keeps those whose name contains TEXT. Rays: the primary rays of an S x S
@@ -11,6 +12,9 @@
 // For each input and thread count it prints Mrays/s of both and their ratio (best of N
 // rounds, the two interleaved), build times (the lab's SAH, Embree's high-quality build),
 // memory per triangle, and how often the two agree: hit or miss, and t to 1e-4 relative.
+// --by-class adds, for the primary rays on one thread, nanoseconds per ray of each side for
+// three kinds of ray apart: those that miss the mesh's box, those that enter it and miss,
+// and those that hit (each kind timed alone, so the branch predictor sees one kind).
 #include "accel/accel.hpp"
 #include "geometry/procedural.hpp"
 #include "io/obj.hpp"
@@ -132,7 +136,44 @@ struct Input {
     MeshData mesh;
 };
 
-void measure(const Input& input, int size, int rounds) {
+// Nanoseconds per primary ray on one thread, by kind of ray (--by-class).
+void by_class(const Accel& accel, const SurfaceList& list, const Mesh& mesh, const EmbreeScene& embree,
+              const std::vector<Ray>& primary, int rounds) {
+    std::vector<Ray> kind[3];
+    for (const Ray& r : primary) {
+        HitRecord rec;
+        kind[!might_hit(mesh.box(), r, Interval{}) ? 0 : accel.hit(list, r, Interval{}, rec) ? 2 : 1].push_back(r);
+    }
+    const char* names[3] = {"miss the box", "enter, miss", "hit"};
+    std::atomic<long> sink{0};
+    std::printf("  primary rays by kind, 1 thread: %-14s %7s %10s %10s %7s\n", "", "rays", "lab ns", "Embree ns",
+                "ratio");
+    for (int k = 0; k < 3; ++k) {
+        const std::vector<Ray>& rays = kind[k];
+        if (rays.empty()) continue;
+        double lab = 1e30, emb = 1e30;
+        for (int round = 0; round < rounds; ++round) {
+            lab = std::min(lab, timed(1, rays.size(), [&](std::size_t b, std::size_t e) {
+                               long n = 0;
+                               for (std::size_t i = b; i < e; ++i) {
+                                   HitRecord rec;
+                                   n += accel.hit(list, rays[i], Interval{}, rec);
+                               }
+                               sink += n;
+                           }));
+            emb = std::min(emb, timed(1, rays.size(), [&](std::size_t b, std::size_t e) {
+                               long n = 0;
+                               for (std::size_t i = b; i < e; ++i)
+                                   n += std::isfinite(embree.hit(rays[i], std::numeric_limits<float>::infinity()));
+                               sink += n;
+                           }));
+        }
+        const double per = 1e9 / double(rays.size());
+        std::printf("  %-47s %7zu %10.1f %10.1f %7.2f\n", names[k], rays.size(), lab * per, emb * per, emb / lab);
+    }
+}
+
+void measure(const Input& input, int size, int rounds, bool classes) {
     const auto lab_start = Clock::now();
     SurfaceList list;
     list.add(Mesh(input.mesh));
@@ -186,6 +227,7 @@ void measure(const Input& input, int size, int rounds) {
     std::printf("  agreement: hit/miss %.4f %%, t within 1e-4 %.4f %% of common hits, shadow %.4f %%\n",
                 100.0 * agree / double(primary.size()), both_hit ? 100.0 * t_agree / both_hit : 100.0,
                 shadow.empty() ? 100.0 : 100.0 * shadow_agree / double(shadow.size()));
+    if (classes) by_class(accel, list, mesh, embree, primary, rounds);
     std::printf("  %-8s %7s %12s %12s %7s\n", "rays", "threads", "lab Mrays/s", "Embree", "ratio");
     std::atomic<long> sink{0};
     for (const char* kind : {"primary", "shadow"}) {
@@ -224,7 +266,7 @@ void measure(const Input& input, int size, int rounds) {
 
 int main(int argc, char** argv) {
     int rounds = 3, size = 512;
-    bool procedural = true;
+    bool procedural = true, classes = false;
     std::string only;
     std::vector<Input> inputs;
     for (int i = 1; i < argc; ++i) {
@@ -236,14 +278,16 @@ int main(int argc, char** argv) {
                 size = std::max(16, std::atoi(argv[++i]));
             } else if (a == "--only" && i + 1 < argc) {
                 only = argv[++i];
+            } else if (a == "--by-class") {
+                classes = true;
             } else if (a == "--no-procedural") {
                 procedural = false;
             } else if (!a.empty() && a[0] != '-') {
                 inputs.push_back({a.substr(a.find_last_of('/') + 1), load_obj(a)});
             } else {
-                std::fprintf(
-                    stderr,
-                    "usage: bench_embree [--rounds N] [--size S] [--no-procedural] [--only TEXT] [MESH.obj ...]\n");
+                std::fprintf(stderr,
+                             "usage: bench_embree [--rounds N] [--size S] [--no-procedural] [--only TEXT] [--by-class] "
+                             "[MESH.obj ...]\n");
                 return 2;
             }
         } catch (const std::exception& e) {
@@ -266,6 +310,6 @@ int main(int argc, char** argv) {
         "rtcIntersect1/rtcOccluded1\n",
         real_name(), RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH);
     for (const Input& in : inputs)
-        if (in.name.find(only) != std::string::npos) measure(in, size, rounds);
+        if (in.name.find(only) != std::string::npos) measure(in, size, rounds, classes);
     return 0;
 }

@@ -271,8 +271,8 @@ TEST_CASE("10.4 a mesh's blocks test with their own float corners where float ho
         const MeshAccel& accel = std::get<Mesh>(list[0].shape).accel();
         const bool all_exact = data == &exact;
         CHECK(accel.corners.empty() == all_exact);
-        CHECK(std::all_of(accel.blocks.begin(), accel.blocks.end(),
-                          [](const TriangleBlock& b) { return b.exact; }) == all_exact);
+        CHECK(std::all_of(accel.blocks.begin(), accel.blocks.end(), [](const TriangleBlock& b) { return b.exact; }) ==
+              all_exact);
         rt::test::RaySet set = rt::test::random_rays(20000), crossing;
         rt::test::edge_rays(*data, centre, set, crossing);
         CHECK(disagreements(list, set.rays, set.intervals, kStructures) == 0);
