@@ -282,16 +282,6 @@ TEST_CASE("10.4 a mesh's blocks test with their own float corners where float ho
     }
 }
 
-TEST_CASE("10.4 round_to_float rounds values side by side (GCC 12.2 folds the plain conversion away)") {
-    // A mesh's points rounded in one loop, x, y and z side by side: the pattern GCC's
-    // vectoriser turns into a no-op when written Real(float(x)) (at -O2, this test's build).
-    std::vector<Vec3> points{Vec3(0.1, 0.2, 0.3), Vec3(Real(1) / 3, 0.7, 0.9)};
-    for (Vec3& p : points) p = Vec3(round_to_float(p.x), round_to_float(p.y), round_to_float(p.z));
-    CHECK(points[0] == Vec3(0.1f, 0.2f, 0.3f));
-    CHECK(points[1] == Vec3(1.0f / 3, 0.7f, 0.9f));
-    CHECK(round_to_float(Real(0.5)) == Real(0.5));
-}
-
 TEST_CASE("10.4 the chapter's scenes render the same image with every structure, bit for bit") {
     for (const char* name : {"spheres", "soup"}) {
         CAPTURE(name);
