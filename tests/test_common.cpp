@@ -1,4 +1,5 @@
 // The shared library: images, sampling, the render loop.
+#include "core/bvh.hpp"
 #include "geometry/sphere.hpp"
 #include "io/image_file.hpp"
 #include "render/camera.hpp"
@@ -11,7 +12,9 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <memory>
+#include <pcg_random.hpp>
 #include <vector>
 
 using namespace rt;
@@ -271,6 +274,39 @@ TEST_CASE("round_to_float rounds values side by side (GCC 12.2 folds the plain c
     CHECK(points[0] == Vec3(0.1f, 0.2f, 0.3f));
     CHECK(points[1] == Vec3(1.0f / 3, 0.7f, 0.9f));
     CHECK(round_to_float(Real(0.5)) == Real(0.5));
+}
+
+TEST_CASE("float_below and float_above give the nearest float on each side, whatever the sign") {
+    // The wide BVH's rays are made of these (core/wide_bvh.hpp): a float that is not below
+    // the origin (or one more than a step away) loses boxes or costs visits.
+    const auto check = [](Real x) {
+        CAPTURE(x);
+        const float lo = float_below(x), hi = float_above(x);
+        CHECK(Real(lo) <= x);
+        CHECK(Real(hi) >= x);
+        // Nearest: the next float up from lo is above x (unless lo is x), and down from hi below.
+        if (Real(lo) != x) CHECK(Real(std::nextafter(lo, std::numeric_limits<float>::infinity())) > x);
+        if (Real(hi) != x) CHECK(Real(std::nextafter(hi, -std::numeric_limits<float>::infinity())) < x);
+    };
+    for (Real x : {Real(0), -Real(0), Real(1), Real(-1), Real(0.1), Real(-0.1), Real(1) / 3, -Real(1) / 3,
+                   Real(std::numeric_limits<float>::max()), -Real(std::numeric_limits<float>::max()),
+                   Real(std::numeric_limits<float>::denorm_min()), Real(1e-30), Real(-1e-30)})
+        check(x);
+    if constexpr (sizeof(Real) > sizeof(float)) {
+        check(Real(1e-50));  // below float's smallest: rounds to zero, steps to +-denorm_min
+        check(Real(-1e-50));
+        CHECK(float_below(Real(1e-50)) == 0.0f);
+        CHECK(float_below(Real(-1e-50)) == -std::numeric_limits<float>::denorm_min());
+        CHECK(float_above(Real(1e-50)) == std::numeric_limits<float>::denorm_min());
+    }
+    CHECK(float_below(kInfinity) == std::numeric_limits<float>::infinity());
+    CHECK(float_below(-kInfinity) == -std::numeric_limits<float>::infinity());
+    CHECK(std::signbit(float_below(Real(0))) == false);  // exact: kept as it is
+    pcg32 rng(7);
+    for (int i = 0; i < 10000; ++i) {
+        const double u = std::ldexp(double(rng()) / 4294967296.0, int(rng(40)) - 20);
+        check(Real(rng(2) ? u : -u));
+    }
 }
 
 }  // TEST_SUITE("common")
