@@ -293,7 +293,7 @@ TEST_CASE("float_below and float_above give the nearest float on each side, what
                    Real(std::numeric_limits<float>::denorm_min()), Real(1e-30), Real(-1e-30)})
         check(x);
     if constexpr (sizeof(Real) > sizeof(float)) {
-        check(Real(1e-50));  // below float's smallest: rounds to zero, steps to +-denorm_min
+        check(Real(1e-50));  // below float's smallest: rounds to +-0, and the wrong side steps to +-denorm_min
         check(Real(-1e-50));
         CHECK(float_below(Real(1e-50)) == 0.0f);
         CHECK(float_below(Real(-1e-50)) == -std::numeric_limits<float>::denorm_min());
