@@ -1,7 +1,9 @@
 #include "core/wide_bvh.hpp"
 
+#include <algorithm>
 #include <array>
 #include <limits>
+#include <stdexcept>
 
 namespace rt {
 
@@ -95,6 +97,26 @@ struct Gather {
     }
 };
 
+// The slots near to far along each octant's diagonal (WideNode::order): by the box
+// centre's distance along it, empty slots last.
+template <int W>
+void set_order(WideNode<W>& node, int n) {
+    for (int octant = 0; octant < 8; ++octant) {
+        double key[W];
+        int slots[W];
+        for (int c = 0; c < W; ++c) {
+            slots[c] = c;
+            key[c] = 0;
+            for (int a = 0; a < 3; ++a) {
+                const double centre = double(node.lo[a][c]) + double(node.hi[a][c]);
+                key[c] += octant >> a & 1 ? -centre : centre;
+            }
+        }
+        std::stable_sort(slots, slots + n, [&](int x, int y) { return key[x] < key[y]; });
+        for (int p = 0; p < W; ++p) node.order[p] |= std::uint32_t(slots[p]) << 3 * octant;
+    }
+}
+
 // Writes wide node `at` for binary node `b`, its inner children after it, depth first.
 template <int W>
 void emit(const FlatBvh& bvh, const Gather<W>& g, std::uint32_t b, WideBvh<W>& out, std::uint32_t at) {
@@ -110,14 +132,16 @@ void emit(const FlatBvh& bvh, const Gather<W>& g, std::uint32_t b, WideBvh<W>& o
     for (int c = 0; c < n; ++c) {
         const BvhNode& k = bvh.nodes[kids[c]];
         if (k.leaf()) {
-            node.first[c] = k.first;
-            node.count[c] = k.count;
+            if (k.first > kMaxLeafFirst || k.count > kMaxLeafCount)
+                throw std::length_error("wide BVH: a leaf beyond what a child reference holds");
+            node.child[c] = leaf_ref(k.first, k.count);
         } else {
-            node.first[c] = std::uint32_t(out.nodes.size());
+            node.child[c] = std::uint32_t(out.nodes.size());
             out.nodes.emplace_back();
-            emit(bvh, g, kids[c], out, node.first[c]);
+            emit(bvh, g, kids[c], out, node.child[c]);
         }
     }
+    set_order(node, n);
     out.nodes[at] = node;
 }
 

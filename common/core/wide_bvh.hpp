@@ -21,13 +21,34 @@
 
 namespace rt {
 
+// A child slot's reference: an inner child's node number, or a leaf with its item count and
+// first item slot, in one word, so that pushing children is one vector store.
+inline constexpr std::uint32_t kLeafRef = 1u << 31;
+inline constexpr int kLeafCountShift = 27;
+inline constexpr std::uint32_t kMaxLeafFirst = (1u << kLeafCountShift) - 1, kMaxLeafCount = 15;
+inline std::uint32_t leaf_ref(std::uint32_t first, std::uint32_t count) {
+    return kLeafRef | count << kLeafCountShift | first;
+}
+inline bool is_leaf(std::uint32_t ref) {
+    return (ref & kLeafRef) != 0;
+}
+inline std::uint32_t leaf_first(std::uint32_t ref) {
+    return ref & kMaxLeafFirst;
+}
+inline std::uint32_t leaf_count(std::uint32_t ref) {
+    return (ref & ~kLeafRef) >> kLeafCountShift;
+}
+
 template <int W>
 struct alignas(64) WideNode {
     float lo[3][W];  // lo[axis][child]; an empty child slot has an empty box (lo > hi)
     float hi[3][W];
-    std::uint32_t first[W];  // an inner child: its node; a leaf child: its first item slot (or
-                             // whatever the owner renumbered it to: see MeshAccel)
-    std::uint32_t count[W];  // a leaf child: its item count (>= 1); an inner child or an empty slot: 0
+    std::uint32_t child[W];  // each slot's reference (leaf_ref for a leaf); 0 for an empty slot
+    // The slots near to far for each of the eight direction octants, so that a search can
+    // push the children it enters in a good order without sorting them: the slot a ray of
+    // octant o meets p-th is order[p] >> 3 o & 7 (by box centre along the octant's diagonal).
+    // Empty slots come last.
+    std::uint32_t order[W];
 };
 
 template <int W>
@@ -53,6 +74,7 @@ template <int W>
 struct WideRay {
     float origin_near[3], origin_far[3], inv[3];
     std::uint32_t near_offset[3], far_offset[3];  // where each axis's near and far planes are in a node
+    std::uint32_t octant_shift = 0;               // 3 x the direction's octant (WideNode::order)
 
     static constexpr float kSlack = 0x1p-20f;  // 16 float epsilons
 
@@ -70,6 +92,7 @@ struct WideRay {
             const auto hi = std::uint32_t(offsetof(WideNode<W>, hi) + a * sizeof(float[W]));
             near_offset[a] = near_hi ? hi : lo;
             far_offset[a] = near_hi ? lo : hi;
+            octant_shift += near_hi ? 3u << a : 0;
         }
     }
 };
@@ -110,54 +133,157 @@ inline unsigned lane_mask(FloatLanes<8>::type m) {
 // load to the next node's), and the entry is lowered for the caller off that path. A
 // distance that comes out negative is one whose exact value is negative too (rounding keeps
 // signs), so it can only lose to tmin.
-template <bool kAhead, int W>
-inline unsigned enter(const WideNode<W>& node, const WideRay<W>& ray, float tmin, float tmax, float (&t)[W]) {
+// The ray as the node test reads it: each value in all W lanes, made once per query, so
+// that a visit takes them as operands instead of spreading them out again. Ahead of the
+// origin (kAhead) the slack is folded into the reciprocals: every distance that can decide
+// the answer is then >= 0 and within a few float epsilons of its exact value *relatively*,
+// so measuring entries with 1/d shrunk by kSlack and exits with 1/d grown by it puts each
+// on its safe side (a distance that comes out negative is one whose exact value is
+// negative too: rounding keeps signs, so it can only lose to tmin). Otherwise both use
+// 1/d, and enter() widens the interval after.
+// x in every lane.
+template <class F>
+inline F splat(float x) {
+    if constexpr (sizeof(F) == 16) {
+        return F(_mm_set1_ps(x));
+    } else {
+#ifdef __AVX__
+        return F(_mm256_set1_ps(x));
+#else
+        const __m128 half = _mm_set1_ps(x);
+        F v;
+        std::memcpy(&v, &half, 16);
+        std::memcpy(reinterpret_cast<char*>(&v) + 16, &half, 16);
+        return v;
+#endif
+    }
+}
+
+template <int W>
+struct RayLanes {
     using F = typename FloatLanes<W>::type;
+    F origin_near[3], origin_far[3], inv_near[3], inv_far[3];
+    std::size_t near_offset[3], far_offset[3];
+
+    RayLanes(const WideRay<W>& r, bool ahead) {
+#pragma GCC unroll 3
+        for (int a = 0; a < 3; ++a) {
+            origin_near[a] = splat<F>(r.origin_near[a]);
+            origin_far[a] = splat<F>(r.origin_far[a]);
+            inv_near[a] = splat<F>(ahead ? r.inv[a] * (1 - WideRay<W>::kSlack) : r.inv[a]);
+            inv_far[a] = splat<F>(ahead ? r.inv[a] * (1 + WideRay<W>::kSlack) : r.inv[a]);
+            near_offset[a] = r.near_offset[a];
+            far_offset[a] = r.far_offset[a];
+        }
+    }
+};
+
+template <int W>
+using LaneMask = decltype(typename FloatLanes<W>::type{} < typename FloatLanes<W>::type{});
+
+// Where the ray enters each child's box within [tmin, tmax] (float bounds, already rounded
+// outwards, in every lane), lowered to be safe, in t; entered marks the children it enters,
+// and the return value has bit c set for child c among them.
+template <bool kAhead, int W>
+inline unsigned enter(const WideNode<W>& node, const RayLanes<W>& ray, typename FloatLanes<W>::type tmin,
+                      typename FloatLanes<W>::type tmax, typename FloatLanes<W>::type& t, LaneMask<W>& entered) {
+    using F = typename FloatLanes<W>::type;
+    // A node's planes are whole, aligned vectors (W floats from a 64-byte boundary).
+    using Plane [[gnu::may_alias]] = F;
     F near[3], far[3];
     const char* base = reinterpret_cast<const char*>(&node);
     for (int a = 0; a < 3; ++a) {
-        F n, f;
-        std::memcpy(&n, base + ray.near_offset[a], sizeof n);
-        std::memcpy(&f, base + ray.far_offset[a], sizeof f);
-        near[a] = (n - ray.origin_near[a]) * ray.inv[a];
-        far[a] = (f - ray.origin_far[a]) * ray.inv[a];
+        near[a] = (*reinterpret_cast<const Plane*>(base + ray.near_offset[a]) - ray.origin_near[a]) * ray.inv_near[a];
+        far[a] = (*reinterpret_cast<const Plane*>(base + ray.far_offset[a]) - ray.origin_far[a]) * ray.inv_far[a];
     }
     // The largest entry and smallest exit, as a tree (shorter than a chain). A NaN (0 * inf:
     // the ray lies in a slab's plane) makes `x > y ? x : y` give y: in the inner pair, at
     // worst the other distance is dropped (the interval only grows); the outer pair has the
     // bound that is never NaN second, so the NaN goes no further.
-    const F tmin_v = F{} + tmin, tmax_v = F{} + tmax;
-    const F lo_x = near[0] > tmin_v ? near[0] : tmin_v, lo_yz = near[1] > near[2] ? near[1] : near[2];
-    const F hi_x = far[0] < tmax_v ? far[0] : tmax_v, hi_yz = far[1] < far[2] ? far[1] : far[2];
+    const F lo_x = near[0] > tmin ? near[0] : tmin, lo_yz = near[1] > near[2] ? near[1] : near[2];
+    const F hi_x = far[0] < tmax ? far[0] : tmax, hi_yz = far[1] < far[2] ? far[1] : far[2];
     F lo = lo_yz > lo_x ? lo_yz : lo_x;
     F hi = hi_yz < hi_x ? hi_yz : hi_x;
     // The tiny absolute term covers products that underflowed to denormals.
     constexpr float tiny = std::numeric_limits<float>::min();
     if constexpr (kAhead) {
-        const unsigned mask = lane_mask(F(lo <= hi * (1 + WideRay<W>::kSlack) + tiny));
-        lo *= 1 - WideRay<W>::kSlack;
-        std::memcpy(t, &lo, sizeof t);
-        return mask;
+        entered = lo <= hi + tiny;
+        t = lo;
     } else {
         const F abs_lo = lo < 0 ? -lo : lo, abs_hi = hi < 0 ? -hi : hi;
         lo -= abs_lo * WideRay<W>::kSlack;
         hi += abs_hi * WideRay<W>::kSlack + tiny;
-        std::memcpy(t, &lo, sizeof t);
-        return lane_mask(F(lo <= hi));
+        entered = lo <= hi;
+        t = lo;
     }
+    return lane_mask(F(entered));
 }
 
-// Both queries walk the tree the same way: the children a ray enters, one followed and the
-// others on a stack with their entry distances. A leaf is tested whole, leaf(first, count,
-// interval): the caller keeps its items together (geometry/triangle_block.hpp). As soon as
-// a child is known to be entered its memory is asked for: a node here, a leaf through
-// fetch(first), so that it is on its way while the search goes on elsewhere (on a big mesh
-// each visit can be a trip to memory).
-// - The closest hit (kAny false), as closest_hit() in core/bvh.hpp: nearest child first;
-//   leaf narrows interval.max and returns true when it finds a closer hit, and a postponed
-//   child whose entry lies beyond the best hit found since is skipped.
-// - Any hit (kAny true): the first leaf that returns true ends the search. Children go in
-//   slot order: sorting them measured slower than the blockers it finds sooner.
+// For each mask of eight lanes, the lanes that are set, highest first (the rest 0): the
+// shuffle that packs the children a ray enters together, farthest on the bottom.
+struct PackTable {
+    alignas(32) std::uint32_t lanes[256][8];
+};
+constexpr PackTable make_pack_table() {
+    PackTable table{};
+    for (unsigned m = 0; m < 256; ++m) {
+        int n = 0;
+        for (int lane = 7; lane >= 0; --lane)
+            if (m >> lane & 1) table.lanes[m][n++] = std::uint32_t(lane);
+    }
+    return table;
+}
+inline constexpr PackTable kPackTable = make_pack_table();
+
+// Writes the children that `entered` marks to the stack (refs, ts) in the octant's order,
+// the nearest last, and returns how many; `nearest` is that last one, which the caller
+// follows at once (so it is not read back from the stack: that would wait for the store).
+// Eight at a time with AVX2: one shuffle puts the slots in order and packs the entered ones
+// together, and one store each writes them (the stack has room for W beyond its top).
+// Elsewhere, the same order one slot at a time.
+template <int W>
+inline int push_children(const WideNode<W>& node, std::uint32_t octant_shift, unsigned mask,
+                         const typename FloatLanes<W>::type& t, const LaneMask<W>& entered, std::uint32_t* refs,
+                         float* ts, std::uint32_t& nearest) {
+#ifdef __AVX2__
+    if constexpr (W == 8) {
+        const __m256i order = _mm256_srl_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.order)),
+                                               _mm_cvtsi32_si128(int(octant_shift)));
+        const unsigned ordered = unsigned(_mm256_movemask_ps(_mm256_permutevar8x32_ps(__m256(entered), order)));
+        nearest = node.child[node.order[std::countr_zero(ordered)] >> octant_shift & 7];
+        const __m256i pick = _mm256_permutevar8x32_epi32(
+            order, _mm256_load_si256(reinterpret_cast<const __m256i*>(kPackTable.lanes[ordered])));
+        _mm256_storeu_si256(
+            reinterpret_cast<__m256i*>(refs),
+            _mm256_permutevar8x32_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.child)), pick));
+        _mm256_storeu_ps(ts, _mm256_permutevar8x32_ps(__m256(t), pick));
+        return std::popcount(ordered);
+    }
+#endif
+    (void)entered;
+    int slots[W], n = 0;
+    for (int p = 0; p < W; ++p) {
+        const int slot = int(node.order[p] >> octant_shift & 7);
+        if (mask >> slot & 1) slots[n++] = slot;
+    }
+    for (int i = 0; i < n; ++i) {
+        refs[i] = node.child[slots[n - 1 - i]];
+        ts[i] = t[slots[n - 1 - i]];
+    }
+    nearest = node.child[slots[0]];
+    return n;
+}
+
+// Both queries walk the tree the same way: the children a ray enters go on a stack with
+// their entry distances, in the order its direction's octant gives (WideNode::order), and the
+// top one is taken next. A leaf is tested whole, leaf(first, count, interval): the caller
+// keeps its items together (geometry/triangle_block.hpp). The next node or leaf is asked for
+// while the current one is tested: fetch(first) for a leaf, so that on a big mesh, where each
+// visit can be a trip to memory, it is on its way.
+// - The closest hit (kAny false), as closest_hit() in core/bvh.hpp: leaf narrows
+//   interval.max and returns true when it finds a closer hit, and a child whose entry lies
+//   beyond the best hit found since it was pushed is skipped.
+// - Any hit (kAny true): the first leaf that returns true ends the search.
 // kAhead: interval.min >= 0, which lets enter() take its cheaper form.
 template <bool kAny, bool kAhead, int W, class Leaf, class Fetch>
 bool traverse_from(const WideBvh<W>& bvh, const WideRay<W>& r, Interval interval, Leaf&& leaf, Fetch&& fetch) {
@@ -168,78 +294,59 @@ bool traverse_from(const WideBvh<W>& bvh, const WideRay<W>& r, Interval interval
         count.items += bvh.root_count;
         return leaf(0, bvh.root_count, interval);
     }
+    using F = typename FloatLanes<W>::type;
     const float tmin = float_below(interval.min);  // >= 0 when interval.min is
     float tmax = float_above(widen_far(interval.max));
-    struct Entry {
-        std::uint32_t first, count;
-        float t;
-    };
-    Entry stack[(W - 1) * kMaxBvhDepth + 2];
+    const RayLanes<W> lanes(r, kAhead);
+    const F tmin_v = splat<F>(tmin);
+    F tmax_v = splat<F>(tmax);
+    // Each visit follows one child and postpones at most W - 1, and the store writes W slots.
+    constexpr int kStack = (W - 1) * kMaxBvhDepth + W + 1;
+    alignas(32) std::uint32_t refs[kStack];
+    alignas(32) float ts[kStack];
     int top = 0;
-    Entry at{0, 0, tmin};
+    std::uint32_t ref = 0;  // the root
     bool found = false;
     for (;;) {
-        if (at.count != 0) {
-            count.items += at.count;
-            if (leaf(at.first, at.count, interval)) {
+        if (is_leaf(ref)) {
+            count.items += leaf_count(ref);
+            if (leaf(leaf_first(ref), leaf_count(ref), interval)) {
                 if (kAny) return true;
                 found = true;
                 tmax = float_above(widen_far(interval.max));
+                tmax_v = splat<F>(tmax);
             }
         } else {
-            const WideNode<W>& node = bvh.nodes[at.first];
-            float t[W];
-            unsigned mask = enter<kAhead>(node, r, tmin, tmax, t);
+            const WideNode<W>& node = bvh.nodes[ref];
+            F t;
+            LaneMask<W> entered;
+            const unsigned mask = enter<kAhead>(node, lanes, tmin_v, tmax_v, t, entered);
             count.nodes += W;
-            for (unsigned m = mask; m != 0; m &= m - 1) {
-                const int c = std::countr_zero(m);
-                if (node.count[c] == 0) {
-                    const char* p = reinterpret_cast<const char*>(&bvh.nodes[node.first[c]]);
-                    for (int line = 0; line < int(sizeof(WideNode<W>)); line += 64) __builtin_prefetch(p + line);
-                } else {
-                    fetch(node.first[c]);
-                }
-            }
             if (mask != 0) {
-                if (kAny || (mask & (mask - 1)) == 0) {  // slot order: the first followed, the rest pushed
-                    int c = std::countr_zero(mask);
-                    at = Entry{node.first[c], node.count[c], t[c]};
-                    for (mask &= mask - 1; mask != 0; mask &= mask - 1) {
-                        c = std::countr_zero(mask);
-                        stack[top++] = Entry{node.first[c], node.count[c], t[c]};
+                top += push_children(node, r.octant_shift, mask, t, entered, refs + top, ts + top, ref) - 1;
+                // The one followed now and the one after it are asked for whole.
+                const auto ask = [&](std::uint32_t child) {
+                    if (is_leaf(child)) {
+                        fetch(leaf_first(child));
+                    } else {
+                        const char* p = reinterpret_cast<const char*>(&bvh.nodes[child]);
+                        for (int line = 0; line < int(sizeof(WideNode<W>)); line += 64) __builtin_prefetch(p + line);
                     }
-                    continue;
-                }
-                if (std::popcount(mask) == 2) {  // the commonest case after one: no sort
-                    int c0 = std::countr_zero(mask), c1 = std::countr_zero(mask & (mask - 1));
-                    if (t[c1] < t[c0]) std::swap(c0, c1);
-                    stack[top++] = Entry{node.first[c1], node.count[c1], t[c1]};
-                    at = Entry{node.first[c0], node.count[c0], t[c0]};
-                    continue;
-                }
-                // Nearest first (insertion sort: there are few), all but the nearest pushed.
-                int order[W], n = 0;
-                for (; mask != 0; mask &= mask - 1) {
-                    const int c = std::countr_zero(mask);
-                    int j = n++;
-                    for (; j > 0 && t[order[j - 1]] > t[c]; --j) order[j] = order[j - 1];
-                    order[j] = c;
-                }
-                for (int i = n - 1; i > 0; --i) {
-                    const int c = order[i];
-                    stack[top++] = Entry{node.first[c], node.count[c], t[c]};
-                }
-                at = Entry{node.first[order[0]], node.count[order[0]], t[order[0]]};
+                };
+                ask(ref);
+                if (top > 0) ask(refs[top - 1]);
                 continue;
             }
         }
         // Next: the nearest postponed child still in front of the best hit.
         for (;;) {
             if (top == 0) return found;
-            at = stack[--top];
-            if (kAny || at.t <= tmax) break;
+            --top;
+            if (kAny || ts[top] <= tmax) break;
         }
+        ref = refs[top];
     }
+    return found;
 }
 
 template <bool kAny, int W, class Leaf, class Fetch>

@@ -54,7 +54,9 @@ std::shared_ptr<const MeshAccel> build_accel(const MeshData& d) {
     if (a->wide.root_is_leaf) block(0, a->wide.root_count);
     for (auto& node : a->wide.nodes)
         for (int c = 0; c < kMeshBvhWidth; ++c)
-            if (node.count[c] != 0) node.first[c] = block(node.first[c], node.count[c]);
+            if (is_leaf(node.child[c]))
+                node.child[c] =
+                    leaf_ref(block(leaf_first(node.child[c]), leaf_count(node.child[c])), leaf_count(node.child[c]));
     // The Real corners, unless float holds every one of them.
     if (std::any_of(a->blocks.begin(), a->blocks.end(), [](const TriangleBlock& b) { return !b.exact; })) {
         a->corners.reserve(4 * a->blocks.size());

@@ -52,7 +52,7 @@ inline constexpr int kMeshBvhWidth = 8;
 // are blocks of up to four triangles with their corners copied out side by side, so a leaf
 // is one read of consecutive memory and one pass of vector instructions.
 struct MeshAccel {
-    WideBvh<kMeshBvhWidth> wide;  // a leaf child's `first` is its block's number
+    WideBvh<kMeshBvhWidth> wide;  // a leaf child's first item is its block's number
     std::vector<TriangleBlock> blocks;
     // corners[4 b + lane]: the exact test's, in Real; empty when every block holds its own
     // exactly (TriangleBlock::exact).

@@ -63,8 +63,10 @@ inline unsigned bits(Mask m) {
     return lane_mask(Lanes(m));
 }
 
+// |v|: the sign bit cleared (one instruction; `v < 0 ? -v : v` is three).
 inline Lanes magnitude(Lanes v) {
-    return v < 0 ? -v : v;
+    using Bits = decltype(v < v);
+    return Lanes(Bits(v) & 0x7fffffff);
 }
 
 inline Lanes load(const float (&lanes)[4]) {
@@ -155,7 +157,7 @@ struct BlockLanes {
 }
 
 // The lanes whose triangle the ray might hit (BlockLanes::maybe).
-inline unsigned candidates(const TriangleBlock& block, const RayShear& r, Interval interval) {
+[[gnu::always_inline]] inline unsigned candidates(const TriangleBlock& block, const RayShear& r, Interval interval) {
     return classify(block, r, interval).maybe;
 }
 
