@@ -10,7 +10,10 @@
 // camera (default 512) looking at the mesh, and shadow rays from each primary hit (the
 // lab's, offset along the ray) towards a point light.
 // For each input and thread count it prints Mrays/s of both and their ratio (best of N
-// rounds, the two interleaved), build times (the lab's SAH, Embree's high-quality build),
+// rounds, the two interleaved). Like for like, the lab's side of a primary ray is the mesh's
+// own search, which gives what rtcIntersect1 gives (t, triangle, barycentrics); one more row
+// times what the renderer calls, the search through the scene made into a whole HitRecord,
+// against the same rtcIntersect1. Then build times (the lab's SAH, Embree's high-quality build),
 // memory per triangle, and how often the two agree: hit or miss, and t to 1e-4 relative.
 // --by-class adds, for the primary rays on one thread, nanoseconds per ray of each side for
 // three kinds of ray apart: those that miss the mesh's box, those that enter it and miss,
@@ -136,6 +139,15 @@ struct Input {
     MeshData mesh;
 };
 
+constexpr float kFar = std::numeric_limits<float>::infinity();
+
+// The lab's side of a primary ray, like rtcIntersect1: the closest hit's t, triangle and
+// barycentrics, from the mesh's own search.
+bool lab_primary(const Mesh& mesh, const Ray& r) {
+    MeshHit h;
+    return hit(mesh, r, Interval{}, h);
+}
+
 // Nanoseconds per primary ray on one thread, by kind of ray (--by-class).
 void by_class(const Accel& accel, const SurfaceList& list, const Mesh& mesh, const EmbreeScene& embree,
               const std::vector<Ray>& primary, int rounds) {
@@ -155,16 +167,12 @@ void by_class(const Accel& accel, const SurfaceList& list, const Mesh& mesh, con
         for (int round = 0; round < rounds; ++round) {
             lab = std::min(lab, timed(1, rays.size(), [&](std::size_t b, std::size_t e) {
                                long n = 0;
-                               for (std::size_t i = b; i < e; ++i) {
-                                   HitRecord rec;
-                                   n += accel.hit(list, rays[i], Interval{}, rec);
-                               }
+                               for (std::size_t i = b; i < e; ++i) n += lab_primary(mesh, rays[i]);
                                sink += n;
                            }));
             emb = std::min(emb, timed(1, rays.size(), [&](std::size_t b, std::size_t e) {
                                long n = 0;
-                               for (std::size_t i = b; i < e; ++i)
-                                   n += std::isfinite(embree.hit(rays[i], std::numeric_limits<float>::infinity()));
+                               for (std::size_t i = b; i < e; ++i) n += std::isfinite(embree.hit(rays[i], kFar));
                                sink += n;
                            }));
         }
@@ -228,38 +236,52 @@ void measure(const Input& input, int size, int rounds, bool classes) {
                 100.0 * agree / double(primary.size()), both_hit ? 100.0 * t_agree / both_hit : 100.0,
                 shadow.empty() ? 100.0 : 100.0 * shadow_agree / double(shadow.size()));
     if (classes) by_class(accel, list, mesh, embree, primary, rounds);
-    std::printf("  %-8s %7s %12s %12s %7s\n", "rays", "threads", "lab Mrays/s", "Embree", "ratio");
+    std::printf("  %-22s %7s %12s %12s %7s\n", "rays", "threads", "lab Mrays/s", "Embree", "ratio");
     std::atomic<long> sink{0};
-    for (const char* kind : {"primary", "shadow"}) {
-        const bool is_primary = kind[0] == 'p';
-        const std::vector<Ray>& rays = is_primary ? primary : shadow;
-        if (rays.empty()) continue;
+    // One row: Mrays/s of each side on 1 and 2 threads, best of the rounds, the two interleaved.
+    const auto row = [&](const char* name, const std::vector<Ray>& rays, auto&& lab_ray, auto&& embree_ray) {
+        if (rays.empty()) return;
         for (int threads : {1, 2}) {
             double lab = 1e30, emb = 1e30;
             for (int round = 0; round < rounds; ++round) {
                 lab = std::min(lab, timed(threads, rays.size(), [&](std::size_t b, std::size_t e) {
                                    long n = 0;
-                                   for (std::size_t k = b; k < e; ++k) {
-                                       HitRecord rec;
-                                       n += is_primary ? accel.hit(list, rays[k], Interval{}, rec)
-                                                       : accel.occluded(list, rays[k], Interval{0, 1});
-                                   }
+                                   for (std::size_t k = b; k < e; ++k) n += lab_ray(rays[k]);
                                    sink += n;
                                }));
-                emb = std::min(
-                    emb, timed(threads, rays.size(), [&](std::size_t b, std::size_t e) {
-                        long n = 0;
-                        for (std::size_t k = b; k < e; ++k)
-                            n += is_primary ? std::isfinite(embree.hit(rays[k], std::numeric_limits<float>::infinity()))
-                                            : embree.occluded(rays[k], 1.0f);
-                        sink += n;
-                    }));
+                emb = std::min(emb, timed(threads, rays.size(), [&](std::size_t b, std::size_t e) {
+                                   long n = 0;
+                                   for (std::size_t k = b; k < e; ++k) n += embree_ray(rays[k]);
+                                   sink += n;
+                               }));
             }
             const double lab_m = double(rays.size()) / lab / 1e6, emb_m = double(rays.size()) / emb / 1e6;
-            std::printf("  %-8s %7d %12.2f %12.2f %7.2f\n", kind, threads, lab_m, emb_m, lab_m / emb_m);
+            std::printf("  %-22s %7d %12.2f %12.2f %7.2f\n", name, threads, lab_m, emb_m, lab_m / emb_m);
             std::fflush(stdout);
         }
-    }
+    };
+    const auto embree_primary = [&](const Ray& r) { return std::isfinite(embree.hit(r, kFar)); };
+    // Like for like: each side finds the closest hit and gives its t, triangle and
+    // barycentrics (the mesh's own search: the fast path's lower level, all of it for a
+    // scene of one mesh), or answers whether anything blocks a shadow ray.
+    row(
+        "primary", primary, [&](const Ray& r) { return lab_primary(mesh, r); }, embree_primary);
+    row(
+        "shadow", shadow,
+        [&](const Ray& r) {
+            return occluded(mesh, r, Interval{0, 1});
+        },
+        [&](const Ray& r) { return embree.occluded(r, 1.0f); });
+    // What the renderer calls: the closest hit through the scene's search, made into the
+    // whole HitRecord (point, unit normal, surface) that shading reads. Embree's side is the
+    // same rtcIntersect1 as above: what it returns is not a record.
+    row(
+        "primary, HitRecord", primary,
+        [&](const Ray& r) {
+            HitRecord rec;
+            return accel.hit(list, r, Interval{}, rec);
+        },
+        embree_primary);
 }
 
 }  // namespace
