@@ -324,17 +324,18 @@ bool traverse_from(const WideBvh<W>& bvh, const WideRay<W>& r, Interval interval
             count.nodes += W;
             if (mask != 0) {
                 top += push_children(node, r.octant_shift, mask, t, entered, refs + top, ts + top, ref) - 1;
-                // The one followed now and the one after it are asked for whole.
-                const auto ask = [&](std::uint32_t child) {
+                // Every child entered is asked for whole, the one followed now and those
+                // postponed (on a big mesh each is a likely trip to memory; the soup's
+                // shadow rays lost a sixth of their speed asking for only the next two).
+                for (unsigned m = mask; m != 0; m &= m - 1) {
+                    const std::uint32_t child = node.child[std::countr_zero(m)];
                     if (is_leaf(child)) {
                         fetch(leaf_first(child));
                     } else {
                         const char* p = reinterpret_cast<const char*>(&bvh.nodes[child]);
                         for (int line = 0; line < int(sizeof(WideNode<W>)); line += 64) __builtin_prefetch(p + line);
                     }
-                };
-                ask(ref);
-                if (top > 0) ask(refs[top - 1]);
+                }
                 continue;
             }
         }
