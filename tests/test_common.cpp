@@ -1,5 +1,7 @@
 // The shared library: images, sampling, the render loop.
 #include "core/bvh.hpp"
+#include "geometry/mesh.hpp"
+#include "geometry/procedural.hpp"
 #include "geometry/sphere.hpp"
 #include "io/image_file.hpp"
 #include "render/camera.hpp"
@@ -310,3 +312,44 @@ TEST_CASE("float_below and float_above give the nearest float on each side, what
 }
 
 }  // TEST_SUITE("common")
+
+TEST_CASE("a wide node's child references keep a leaf's first item and count, and an inner child's number") {
+    for (std::uint32_t first : {0u, 1u, 12345u, kMaxLeafFirst})
+        for (std::uint32_t count : {1u, 4u, kMaxLeafCount}) {
+            const std::uint32_t ref = leaf_ref(first, count);
+            CHECK(is_leaf(ref));
+            CHECK(leaf_first(ref) == first);
+            CHECK(leaf_count(ref) == count);
+        }
+    for (std::uint32_t node : {0u, 1u, 99999u, kLeafRef - 1}) CHECK_FALSE(is_leaf(node));
+}
+
+TEST_CASE("a wide node lists its slots near to far along each octant's diagonal, empty slots last") {
+    const Mesh mesh(terrain(Vec3(0), 10, 1.5, 40));  // 3,200 triangles: many nodes, some not full
+    const auto& nodes = mesh.accel().wide.nodes;
+    REQUIRE(nodes.size() > 10);
+    int partly_empty = 0;
+    for (const WideNode<kMeshBvhWidth>& node : nodes) {
+        int used = 0;
+        for (int c = 0; c < kMeshBvhWidth; ++c) used += node.lo[0][c] <= node.hi[0][c];
+        partly_empty += used < kMeshBvhWidth;
+        for (int octant = 0; octant < 8; ++octant) {
+            unsigned seen = 0;
+            double last = -std::numeric_limits<double>::infinity();
+            for (int p = 0; p < kMeshBvhWidth; ++p) {
+                const int slot = int(node.order[p] >> 3 * octant & 7);
+                seen |= 1u << slot;
+                const bool empty = !(node.lo[0][slot] <= node.hi[0][slot]);
+                CHECK(empty == (p >= used));
+                if (empty) continue;
+                double key = 0;  // the box centre along the octant's diagonal
+                for (int a = 0; a < 3; ++a)
+                    key += (octant >> a & 1 ? -1.0 : 1.0) * (double(node.lo[a][slot]) + double(node.hi[a][slot]));
+                CHECK(key >= last);
+                last = key;
+            }
+            CHECK(seen == 0xffu);  // a permutation of the slots
+        }
+    }
+    CHECK(partly_empty > 0);
+}

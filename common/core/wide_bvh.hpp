@@ -114,7 +114,7 @@ struct FloatLanes<8> {
 inline unsigned lane_mask(FloatLanes<4>::type m) {
     return unsigned(_mm_movemask_ps(__m128(m)));
 }
-inline unsigned lane_mask(FloatLanes<8>::type m) {
+inline unsigned lane_mask(const FloatLanes<8>::type& m) {
 #ifdef __AVX__
     return unsigned(_mm256_movemask_ps(__m256(m)));
 #else
@@ -141,20 +141,19 @@ inline unsigned lane_mask(FloatLanes<8>::type m) {
 // on its safe side (a distance that comes out negative is one whose exact value is
 // negative too: rounding keeps signs, so it can only lose to tmin). Otherwise both use
 // 1/d, and enter() widens the interval after.
-// x in every lane.
+// v = x in every lane. (An out-parameter: a 32-byte vector returned by value draws GCC's
+// ABI warning in builds without AVX.)
 template <class F>
-inline F splat(float x) {
+inline void splat(F& v, float x) {
     if constexpr (sizeof(F) == 16) {
-        return F(_mm_set1_ps(x));
+        v = F(_mm_set1_ps(x));
     } else {
 #ifdef __AVX__
-        return F(_mm256_set1_ps(x));
+        v = F(_mm256_set1_ps(x));
 #else
         const __m128 half = _mm_set1_ps(x);
-        F v;
         std::memcpy(&v, &half, 16);
         std::memcpy(reinterpret_cast<char*>(&v) + 16, &half, 16);
-        return v;
 #endif
     }
 }
@@ -168,10 +167,10 @@ struct RayLanes {
     RayLanes(const WideRay<W>& r, bool ahead) {
 #pragma GCC unroll 3
         for (int a = 0; a < 3; ++a) {
-            origin_near[a] = splat<F>(r.origin_near[a]);
-            origin_far[a] = splat<F>(r.origin_far[a]);
-            inv_near[a] = splat<F>(ahead ? r.inv[a] * (1 - WideRay<W>::kSlack) : r.inv[a]);
-            inv_far[a] = splat<F>(ahead ? r.inv[a] * (1 + WideRay<W>::kSlack) : r.inv[a]);
+            splat(origin_near[a], r.origin_near[a]);
+            splat(origin_far[a], r.origin_far[a]);
+            splat(inv_near[a], ahead ? r.inv[a] * (1 - WideRay<W>::kSlack) : r.inv[a]);
+            splat(inv_far[a], ahead ? r.inv[a] * (1 + WideRay<W>::kSlack) : r.inv[a]);
             near_offset[a] = r.near_offset[a];
             far_offset[a] = r.far_offset[a];
         }
@@ -185,8 +184,8 @@ using LaneMask = decltype(typename FloatLanes<W>::type{} < typename FloatLanes<W
 // outwards, in every lane), lowered to be safe, in t; entered marks the children it enters,
 // and the return value has bit c set for child c among them.
 template <bool kAhead, int W>
-inline unsigned enter(const WideNode<W>& node, const RayLanes<W>& ray, typename FloatLanes<W>::type tmin,
-                      typename FloatLanes<W>::type tmax, typename FloatLanes<W>::type& t, LaneMask<W>& entered) {
+inline unsigned enter(const WideNode<W>& node, const RayLanes<W>& ray, const typename FloatLanes<W>::type& tmin,
+                      const typename FloatLanes<W>::type& tmax, typename FloatLanes<W>::type& t, LaneMask<W>& entered) {
     using F = typename FloatLanes<W>::type;
     // A node's planes are whole, aligned vectors (W floats from a 64-byte boundary).
     using Plane [[gnu::may_alias]] = F;
@@ -298,8 +297,9 @@ bool traverse_from(const WideBvh<W>& bvh, const WideRay<W>& r, Interval interval
     const float tmin = float_below(interval.min);  // >= 0 when interval.min is
     float tmax = float_above(widen_far(interval.max));
     const RayLanes<W> lanes(r, kAhead);
-    const F tmin_v = splat<F>(tmin);
-    F tmax_v = splat<F>(tmax);
+    F tmin_v, tmax_v;
+    splat(tmin_v, tmin);
+    splat(tmax_v, tmax);
     // Each visit follows one child and postpones at most W - 1, and the store writes W slots.
     constexpr int kStack = (W - 1) * kMaxBvhDepth + W + 1;
     alignas(32) std::uint32_t refs[kStack];
@@ -314,7 +314,7 @@ bool traverse_from(const WideBvh<W>& bvh, const WideRay<W>& r, Interval interval
                 if (kAny) return true;
                 found = true;
                 tmax = float_above(widen_far(interval.max));
-                tmax_v = splat<F>(tmax);
+                splat(tmax_v, tmax);
             }
         } else {
             const WideNode<W>& node = bvh.nodes[ref];
