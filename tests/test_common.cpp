@@ -311,8 +311,6 @@ TEST_CASE("float_below and float_above give the nearest float on each side, what
     }
 }
 
-}  // TEST_SUITE("common")
-
 TEST_CASE("a wide node's child references keep a leaf's first item and count, and an inner child's number") {
     for (std::uint32_t first : {0u, 1u, 12345u, kMaxLeafFirst})
         for (std::uint32_t count : {1u, 4u, kMaxLeafCount}) {
@@ -353,3 +351,5 @@ TEST_CASE("a wide node lists its slots near to far along each octant's diagonal,
     }
     CHECK(partly_empty > 0);
 }
+
+}  // TEST_SUITE("common")

@@ -124,23 +124,6 @@ inline unsigned lane_mask(const FloatLanes<8>::type& m) {
 #endif
 }
 
-// Where the ray enters each child's box within [tmin, tmax] (float bounds, already rounded
-// outwards), lowered to be safe, in t; returns which children it enters (bit c for child c).
-//
-// kAhead: tmin >= 0, the usual case, and a cheaper one. Every distance that can decide the
-// answer is then >= 0 and computed to a few float epsilons *relative*, so only the exit
-// needs raising before the comparison (one multiply-add on the path from the node's
-// load to the next node's), and the entry is lowered for the caller off that path. A
-// distance that comes out negative is one whose exact value is negative too (rounding keeps
-// signs), so it can only lose to tmin.
-// The ray as the node test reads it: each value in all W lanes, made once per query, so
-// that a visit takes them as operands instead of spreading them out again. Ahead of the
-// origin (kAhead) the slack is folded into the reciprocals: every distance that can decide
-// the answer is then >= 0 and within a few float epsilons of its exact value *relatively*,
-// so measuring entries with 1/d shrunk by kSlack and exits with 1/d grown by it puts each
-// on its safe side (a distance that comes out negative is one whose exact value is
-// negative too: rounding keeps signs, so it can only lose to tmin). Otherwise both use
-// 1/d, and enter() widens the interval after.
 // v = x in every lane. (An out-parameter: a 32-byte vector returned by value draws GCC's
 // ABI warning in builds without AVX.)
 template <class F>
@@ -158,6 +141,14 @@ inline void splat(F& v, float x) {
     }
 }
 
+// The ray as the node test reads it: each value in all W lanes, made once per query, so
+// that a visit takes them as operands instead of spreading them out again. Ahead of the
+// origin (kAhead) the slack is folded into the reciprocals: every distance that can decide
+// the answer is then >= 0 and within a few float epsilons of its exact value *relatively*,
+// so measuring entries with 1/d shrunk by kSlack and exits with 1/d grown by it puts each
+// on its safe side (a distance that comes out negative is one whose exact value is
+// negative too: rounding keeps signs, so it can only lose to tmin). Otherwise both use
+// 1/d, and enter() widens the interval after.
 template <int W>
 struct RayLanes {
     using F = typename FloatLanes<W>::type;
@@ -276,9 +267,9 @@ inline int push_children(const WideNode<W>& node, std::uint32_t octant_shift, un
 // Both queries walk the tree the same way: the children a ray enters go on a stack with
 // their entry distances, in the order its direction's octant gives (WideNode::order), and the
 // top one is taken next. A leaf is tested whole, leaf(first, count, interval): the caller
-// keeps its items together (geometry/triangle_block.hpp). The next node or leaf is asked for
-// while the current one is tested: fetch(first) for a leaf, so that on a big mesh, where each
-// visit can be a trip to memory, it is on its way.
+// keeps its items together (geometry/triangle_block.hpp). As soon as a child is known to be
+// entered its memory is asked for: a node here, a leaf through fetch(first), so that on a big
+// mesh, where each visit can be a trip to memory, it is on its way.
 // - The closest hit (kAny false), as closest_hit() in core/bvh.hpp: leaf narrows
 //   interval.max and returns true when it finds a closer hit, and a child whose entry lies
 //   beyond the best hit found since it was pushed is skipped.
@@ -347,7 +338,6 @@ bool traverse_from(const WideBvh<W>& bvh, const WideRay<W>& r, Interval interval
         }
         ref = refs[top];
     }
-    return found;
 }
 
 template <bool kAny, int W, class Leaf, class Fetch>
