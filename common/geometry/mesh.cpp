@@ -121,23 +121,29 @@ bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
     const Real t_min = interval.min;
     Real best_t = interval.max;
     std::uint32_t best = kNone;
+    // The lanes the float filter keeps go to the exact test, out of line: about half the
+    // leaves a hit ray reaches keep none, and the traversal loop stays small without it.
+    const auto exact = [&](unsigned lanes, std::uint32_t b, Interval& iv) __attribute__((noinline)) {
+        bool closer = false;
+        // The whole block against the interval as it stands; a hit found on the way is kept
+        // only if it is closer in the one order (lower index at equal t).
+        exact_hits(lanes, a.blocks[b], a.corners_of(b), ray, Interval{t_min, widen_far(iv.max)},
+                   [&](std::uint32_t index, const TriangleHit& h, const std::array<Vec3, 3>& corners) {
+                       if (!(h.t <= best_t) || (h.t == best_t && index > best)) return false;
+                       best_t = h.t;
+                       best = index;
+                       result = MeshHit{h, index, corners};
+                       iv.max = h.t;
+                       closer = true;
+                       return false;
+                   });
+        return closer;
+    };
     return closest_hit(
         a.wide, *r.wide, interval,
-        [&](std::uint32_t b, std::uint32_t, Interval& iv) {
-            bool closer = false;
-            // The whole block against the interval as it stands; a hit found on the way is kept
-            // only if it is closer in the one order (lower index at equal t).
-            for_each_hit(a.blocks[b], a.corners_of(b), r.shear(), ray, Interval{t_min, widen_far(iv.max)},
-                         [&](std::uint32_t index, const TriangleHit& h, const std::array<Vec3, 3>& corners) {
-                             if (!(h.t <= best_t) || (h.t == best_t && index > best)) return false;
-                             best_t = h.t;
-                             best = index;
-                             result = MeshHit{h, index, corners};
-                             iv.max = h.t;
-                             closer = true;
-                             return false;
-                         });
-            return closer;
+        [&](std::uint32_t b, std::uint32_t, Interval & iv) __attribute__((always_inline)) {
+            const unsigned lanes = candidates(a.blocks[b], r.shear(), iv);
+            return lanes != 0 && exact(lanes, b, iv);
         },
         [&](std::uint32_t b) { prefetch(a.blocks[b]); });
 }

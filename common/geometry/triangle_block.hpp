@@ -164,7 +164,7 @@ template <bool kDistances = true>
 
 // The lanes whose triangle the ray's line might cross (classify's `maybe` without the t
 // tests); the exact test then decides each, t included.
-inline unsigned candidates(const TriangleBlock& block, const RayShear& r, Interval interval) {
+[[gnu::always_inline]] inline unsigned candidates(const TriangleBlock& block, const RayShear& r, Interval interval) {
     return classify<false>(block, r, interval).maybe;
 }
 
