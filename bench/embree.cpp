@@ -290,7 +290,7 @@ void measure(const Input& input, int size, int rounds, bool classes) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    int rounds = 3, size = 512;
+    int rounds = 5, size = 512;
     bool procedural = true, classes = false;
     std::string only;
     std::vector<Input> inputs;
