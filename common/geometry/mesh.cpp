@@ -113,37 +113,45 @@ struct MeshRay {
     }
 };
 
+// The closest hit so far: its t and triangle number (kNone before the first).
+struct Closest {
+    Real t;
+    std::uint32_t index = kNone;
+};
+
+// The lanes of block b that the float filter kept, decided by the exact test against the
+// interval as it stands when the block is reached; a hit is kept only if it is closer in the
+// one order (lower index at equal t). Out of line, with its arguments in registers: about
+// half the leaves a hit ray reaches keep no lane, and the search's loop stays small.
+[[gnu::noinline]] bool exact_closest(unsigned lanes, const MeshAccel& a, std::uint32_t b, const Ray& ray, Real t_min,
+                                     Interval& iv, Closest& best, MeshHit& result) {
+    bool closer = false;
+    exact_hits(lanes, a.blocks[b], a.corners_of(b), ray, Interval{t_min, widen_far(iv.max)},
+               [&](std::uint32_t index, const TriangleHit& h, const std::array<Vec3, 3>& corners) {
+                   if (!(h.t <= best.t) || (h.t == best.t && index > best.index)) return false;
+                   best = Closest{h.t, index};
+                   result.triangle = h;  // in place: a whole MeshHit was built on the stack and copied
+                   result.index = index;
+                   result.corners = corners;
+                   iv.max = h.t;
+                   closer = true;
+                   return false;
+               });
+    return closer;
+}
+
 bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
     const MeshAccel& a = mesh.accel();
     interval = in_registers(interval);
     MeshRay r(ray, mesh, interval);
     if (!r.wide) return false;
     const Real t_min = interval.min;
-    Real best_t = interval.max;
-    std::uint32_t best = kNone;
-    // The lanes the float filter keeps go to the exact test, out of line: about half the
-    // leaves a hit ray reaches keep none, and the traversal loop stays small without it.
-    const auto exact = [&](unsigned lanes, std::uint32_t b, Interval& iv) __attribute__((noinline)) {
-        bool closer = false;
-        // The whole block against the interval as it stands; a hit found on the way is kept
-        // only if it is closer in the one order (lower index at equal t).
-        exact_hits(lanes, a.blocks[b], a.corners_of(b), ray, Interval{t_min, widen_far(iv.max)},
-                   [&](std::uint32_t index, const TriangleHit& h, const std::array<Vec3, 3>& corners) {
-                       if (!(h.t <= best_t) || (h.t == best_t && index > best)) return false;
-                       best_t = h.t;
-                       best = index;
-                       result = MeshHit{h, index, corners};
-                       iv.max = h.t;
-                       closer = true;
-                       return false;
-                   });
-        return closer;
-    };
+    Closest best{interval.max};
     return closest_hit(
         a.wide, *r.wide, interval,
         [&](std::uint32_t b, std::uint32_t, Interval & iv) __attribute__((always_inline)) {
             const unsigned lanes = candidates(a.blocks[b], r.shear(), iv);
-            return lanes != 0 && exact(lanes, b, iv);
+            return lanes != 0 && exact_closest(lanes, a, b, ray, t_min, iv, best, result);
         },
         [&](std::uint32_t b) { prefetch(a.blocks[b]); });
 }
