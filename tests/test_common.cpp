@@ -12,6 +12,7 @@
 
 #include <unistd.h>
 #include <bit>
+#include <cstdint>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -353,6 +354,18 @@ TEST_CASE("float_bounds rounds a point's three coordinates as float_below and fl
         }
         check(p);
     }
+}
+
+TEST_CASE("search arrays of 2 MiB or more start on a 2 MiB boundary, smaller ones on their type's") {
+    // What lets the kernel back them with huge pages (core/search_memory.hpp).
+    std::vector<TriangleBlock, SearchAllocator<TriangleBlock>> big(kHugePage / sizeof(TriangleBlock) + 1);
+    CHECK(reinterpret_cast<std::uintptr_t>(big.data()) % kHugePage == 0);
+    big[big.size() - 1].count = 3;  // the whole array is usable
+    CHECK(big.back().count == 3);
+    std::vector<TriangleBlock, SearchAllocator<TriangleBlock>> small(3);
+    CHECK(reinterpret_cast<std::uintptr_t>(small.data()) % alignof(TriangleBlock) == 0);
+    small.resize(kHugePage / sizeof(TriangleBlock) * 2);  // grows from ordinary memory to the big kind
+    CHECK(reinterpret_cast<std::uintptr_t>(small.data()) % kHugePage == 0);
 }
 
 TEST_CASE("a wide node's child references keep a leaf's first item and count, and an inner child's number") {

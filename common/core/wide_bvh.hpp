@@ -9,6 +9,7 @@
 // always entered, and its entry distance is never overestimated. The leaves then decide in
 // Real, as brute force does, so the hits found are exactly brute force's.
 #include "core/bvh.hpp"
+#include "core/search_memory.hpp"
 
 #include <immintrin.h>
 
@@ -54,8 +55,8 @@ struct alignas(64) WideNode {
 
 template <int W>
 struct WideBvh {
-    std::vector<WideNode<W>> nodes;  // nodes[0] is the root; empty for no items
-    bool root_is_leaf = false;       // one leaf holds everything (items slots 0..count)
+    std::vector<WideNode<W>, SearchAllocator<WideNode<W>>> nodes;  // nodes[0] is the root; empty for no items
+    bool root_is_leaf = false;                                     // one leaf holds everything (items slots 0..count)
     std::uint32_t root_count = 0;
 
     std::size_t memory_bytes() const { return nodes.size() * sizeof(WideNode<W>); }

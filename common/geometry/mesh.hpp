@@ -53,10 +53,10 @@ inline constexpr int kMeshBvhWidth = 8;
 // is one read of consecutive memory and one pass of vector instructions.
 struct MeshAccel {
     WideBvh<kMeshBvhWidth> wide;  // a leaf child's first item is its block's number
-    std::vector<TriangleBlock> blocks;
+    std::vector<TriangleBlock, SearchAllocator<TriangleBlock>> blocks;
     // corners[4 b + lane]: the exact test's, in Real; empty when every block holds its own
     // exactly (TriangleBlock::exact).
-    std::vector<std::array<Vec3, 3>> corners;
+    std::vector<std::array<Vec3, 3>, SearchAllocator<std::array<Vec3, 3>>> corners;
 
     const std::array<Vec3, 3>* corners_of(std::uint32_t block) const {
         return corners.empty() ? nullptr : corners.data() + 4 * std::size_t(block);
