@@ -106,8 +106,7 @@ constexpr std::size_t near_offset(int a) {
 }
 template <int W, unsigned kOctant>
 constexpr std::size_t far_offset(int a) {
-    return (kOctant >> a & 1 ? offsetof(WideNode<W>, lo) : offsetof(WideNode<W>, hi)) +
-           std::size_t(a) * sizeof(float[W]);
+    return near_offset<W, kOctant ^ 7u>(a);  // the far side is the near one of the opposite octant
 }
 
 // W floats as one vector of the compiler's (GCC's and Clang's vector_size). Spelled out per
@@ -330,7 +329,7 @@ bool traverse_from(const WideBvh<W>& bvh, const WideRay<W>& r, Interval interval
             LaneMask<W> entered;
             const unsigned mask = enter<kAhead, kOctant>(node, lanes, tmin_v, tmax_v, t, entered);
             count.nodes += W;
-            if ((mask & (mask - 1)) == 0 && mask != 0) {  // one child: follow it, nothing to push
+            if (std::has_single_bit(mask)) {  // one child: follow it, nothing to push
                 ref = node.child[std::countr_zero(mask)];
                 continue;
             }
