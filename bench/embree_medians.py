@@ -1,0 +1,56 @@
+"""Medians of bench_embree's ratios over several runs (bench/embree_runs.sh).
+
+Reads the runs' outputs and prints, for each input and row (primary, shadow, primary with
+the HitRecord) and each thread count, the median lab/Embree ratio with the lowest and
+highest of the runs, then the lowest median of each row against the targets issue 10
+sets: 0.8 of Embree's primary-ray throughput and 0.6 of its shadow-ray throughput.
+"""
+
+import re
+import statistics
+import sys
+
+TARGETS = {"primary": 0.8, "shadow": 0.6}
+
+ratios = {}  # (input, row) -> {threads: [ratio per run]}
+inputs, rows = [], []
+for path in sys.argv[1:]:
+    current = None
+    with open(path) as f:
+        for line in f:
+            m = re.match(r"^(\S.*?): \d+ triangles", line)
+            if m:
+                current = m.group(1)
+                if current not in inputs:
+                    inputs.append(current)
+                continue
+            m = re.match(r"^  (primary|shadow|primary, HitRecord) +([12]) +[\d.]+ +[\d.]+ +([\d.]+)$", line)
+            if m and current:
+                row = m.group(1)
+                if row not in rows:
+                    rows.append(row)
+                ratios.setdefault((current, row), {}).setdefault(m.group(2), []).append(float(m.group(3)))
+
+runs = len(sys.argv) - 1
+print(f"lab/Embree over {runs} runs, one process each: median (lowest-highest)")
+print(f"  {'input':22} {'rays':20} {'1 thread':>18} {'2 threads':>18}")
+worst = {}  # row -> (median, input, threads)
+for name in inputs:
+    for row in rows:
+        cells = []
+        for threads in ("1", "2"):
+            values = ratios.get((name, row), {}).get(threads, [])
+            if not values:
+                cells.append(f"{'-':>18}")
+                continue
+            median = statistics.median(values)
+            cells.append(f"{median:.2f} ({min(values):.2f}-{max(values):.2f})".rjust(18))
+            if row in TARGETS and (row not in worst or median < worst[row][0]):
+                worst[row] = (median, name, threads)
+        print(f"  {name:22} {row:20} {cells[0]} {cells[1]}")
+for row, target in TARGETS.items():
+    if row in worst:
+        median, name, threads = worst[row]
+        verdict = "met" if median >= target else "NOT met"
+        print(f"  lowest {row} median: {median:.2f} ({name}, {threads} thread{'s' if threads != '1' else ''}); "
+              f"target {target}: {verdict}")
