@@ -130,7 +130,7 @@ struct Closest {
                [&](std::uint32_t index, const TriangleHit& h, const std::array<Vec3, 3>& corners) {
                    if (!(h.t <= best.t) || (h.t == best.t && index > best.index)) return false;
                    best = Closest{h.t, index};
-                   result.triangle = h;  // in place: a whole MeshHit was built on the stack and copied
+                   result.triangle = h;  // field by field: a whole MeshHit built and copied cost more
                    result.index = index;
                    result.corners = corners;
                    iv.max = h.t;
