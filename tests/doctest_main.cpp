@@ -2,6 +2,7 @@
 // read a failure: which exercises this build takes from solutions/, and, when a test stops
 // at an exercise of an earlier chapter, which one and how to get past it.
 #define DOCTEST_CONFIG_IMPLEMENT
+#include "core/build_info.hpp"
 #include "core/exercise.hpp"
 
 #include <doctest/doctest.h>
@@ -39,8 +40,8 @@ int main(int argc, char** argv) {
     std::smatch m;
     const std::string program = argv[0];
     if (std::regex_search(program, m, name)) this_chapter = m[1].str();
-    if (std::string(RTLAB_TRACK_NAME) == "exercises")
-        std::printf("[rtlab] exercises track: chapters from solutions/: %s\n", RTLAB_SOLVED_TEXT);
+    if (std::string(rt::build_info::track) == "exercises")
+        std::printf("[rtlab] exercises track: chapters from solutions/: %s\n", rt::build_info::from_solutions);
     doctest::Context context(argc, argv);
     return context.run();
 }

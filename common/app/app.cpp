@@ -1,6 +1,7 @@
 #include "app/app.hpp"
 
 #include "app/ray_tree_svg.hpp"
+#include "core/build_info.hpp"
 #include "core/text.hpp"
 #include "core/version.hpp"
 #include "geometry/limits.hpp"
@@ -135,8 +136,8 @@ json stats_json(const std::string& chapter, const SceneEntry& entry, const Scene
            {"filter", filter_name(o.antialiasing.filter)},
            {"threads", r.threads},
            {"real", real_name()},
-           {"track", RTLAB_TRACK_NAME},
-           {"from_solutions", RTLAB_SOLVED_TEXT},
+           {"track", build_info::track},
+           {"from_solutions", build_info::from_solutions},
            {"rays", rays},
            {"random_numbers", draws},
            {"shading", {{"light_terms", r.counters.light_terms}, {"specular_terms", r.counters.specular_terms}}},
@@ -231,8 +232,8 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
         ->check(CLI::IsMember({"box", "tent"}));
     cli.add_flag("--stats", inv.stats, "print render statistics as one JSON line");
     cli.set_version_flag("--version",
-                         std::string(id_ + " (rtlab " + kVersion + ", Real=" + real_name() + ", " + RTLAB_TRACK_NAME +
-                                     " track, exercises from solutions/: " + RTLAB_SOLVED_TEXT + ")"));
+                         std::string(id_ + " (rtlab " + kVersion + ", Real=" + real_name() + ", " + build_info::track +
+                                     " track, exercises from solutions/: " + build_info::from_solutions + ")"));
 
     const auto usage = [&](const std::string& message) {
         std::fprintf(stderr, "%s: error: %s\n", id_.c_str(), one_line(message).c_str());
