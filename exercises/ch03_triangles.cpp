@@ -10,10 +10,16 @@
 #include <type_traits>
 #include <utility>
 
+// @helpers
+// Your #includes and helper functions, if any (inside namespace rt { ... } to use the
+// library's names unqualified). ./lab exercises keeps these lines like an exercise body.
+// @end
+
 namespace rt {
 
 // @book cramer
 bool ray_triangle(const Ray& ray, const Vec3& A, const Vec3& B, const Vec3& C, Interval interval, TriangleHit& result) {
+    RT_STUDENT_EXERCISE(3, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 3.1 | ray_triangle | book §3.2
     throw NotImplemented("exercise 3.1 (ray_triangle) is not done yet: see book §3.2");
     // @end
@@ -23,6 +29,7 @@ bool ray_triangle(const Ray& ray, const Vec3& A, const Vec3& B, const Vec3& C, I
 // @book watertight
 bool ray_triangle_watertight(const Ray& ray, const Vec3& A, const Vec3& B, const Vec3& C, Interval interval,
                              TriangleHit& result) {
+    RT_STUDENT_EXERCISE(3, 2);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 3.2 | ray_triangle_watertight | book §3.4
     throw NotImplemented("exercise 3.2 (ray_triangle_watertight) is not done yet: see book §3.4");
     // @end

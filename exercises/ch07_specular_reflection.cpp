@@ -6,10 +6,16 @@
 #include "core/exercise.hpp"
 #include "shading/optics.hpp"
 
+// @helpers
+// Your #includes and helper functions, if any (inside namespace rt { ... } to use the
+// library's names unqualified). ./lab exercises keeps these lines like an exercise body.
+// @end
+
 namespace rt {
 
 // @book reflect
 Vec3 reflect(const Vec3& d, const Vec3& n) {
+    RT_STUDENT_EXERCISE(7, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 7.1 | reflect | book §7.1
     throw NotImplemented("exercise 7.1 (reflect) is not done yet: see book §7.1");
     // @end

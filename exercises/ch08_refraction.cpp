@@ -8,10 +8,16 @@
 
 #include <cmath>
 
+// @helpers
+// Your #includes and helper functions, if any (inside namespace rt { ... } to use the
+// library's names unqualified). ./lab exercises keeps these lines like an exercise body.
+// @end
+
 namespace rt {
 
 // @book refract
 bool refract(const Vec3& d, const Vec3& n, Real n_from, Real n_to, Vec3& t) {
+    RT_STUDENT_EXERCISE(8, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 8.1 | refract | book §8.1
     throw NotImplemented("exercise 8.1 (refract) is not done yet: see book §8.1");
     // @end
@@ -20,6 +26,7 @@ bool refract(const Vec3& d, const Vec3& n, Real n_from, Real n_to, Vec3& t) {
 
 // @book schlick
 Real schlick(Real cosine, Real ior) {
+    RT_STUDENT_EXERCISE(8, 2);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 8.2 | schlick | book §8.2
     throw NotImplemented("exercise 8.2 (schlick) is not done yet: see book §8.2");
     // @end
@@ -28,6 +35,7 @@ Real schlick(Real cosine, Real ior) {
 
 // @book beer
 Color beer(const Color& attenuation, Real distance) {
+    RT_STUDENT_EXERCISE(8, 3);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 8.3 | beer | book §8.3
     throw NotImplemented("exercise 8.3 (beer) is not done yet: see book §8.3");
     // @end

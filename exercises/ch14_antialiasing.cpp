@@ -9,10 +9,16 @@
 #include <algorithm>
 #include <cmath>
 
+// @helpers
+// Your #includes and helper functions, if any (inside namespace rt { ... } to use the
+// library's names unqualified). ./lab exercises keeps these lines like an exercise body.
+// @end
+
 namespace rt {
 
 // @book stratified
 Vec2 stratified_point(int k, int n, Vec2 u) {
+    RT_STUDENT_EXERCISE(14, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 14.1 | stratified_point | book §14.2
     throw NotImplemented("exercise 14.1 (stratified_point) is not done yet: see book §14.2");
     // @end
@@ -21,6 +27,7 @@ Vec2 stratified_point(int k, int n, Vec2 u) {
 
 // @book tent
 Real tent_offset(Real u) {
+    RT_STUDENT_EXERCISE(14, 2);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 14.2 | tent_offset | book §14.3
     throw NotImplemented("exercise 14.2 (tent_offset) is not done yet: see book §14.3");
     // @end

@@ -8,10 +8,16 @@
 
 #include <cmath>
 
+// @helpers
+// Your #includes and helper functions, if any (inside namespace rt { ... } to use the
+// library's names unqualified). ./lab exercises keeps these lines like an exercise body.
+// @end
+
 namespace rt {
 
 // @book glossy
 Vec3 glossy_direction(const Vec3& r, Real width, const Vec2& uv) {
+    RT_STUDENT_EXERCISE(17, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 17.1 | glossy_direction | book §17.1
     throw NotImplemented("exercise 17.1 (glossy_direction) is not done yet: see book §17.1");
     // @end

@@ -1,21 +1,110 @@
-// The main() of every unit-test program: doctest's, plus two things a student needs to
-// read a failure: which exercises this build takes from solutions/, and, when a test stops
-// at an exercise of an earlier chapter, which one and how to get past it.
+// The main() of every unit-test program: doctest's, plus what a student needs to read a
+// failure: which exercises this build takes from solutions/; when a test stops at an
+// exercise of an earlier chapter, which one and how to get past it; and, for every test
+// case that fails, one line the grader shows (tools/grade): its first failed check with its
+// values and captured inputs, and which of the student's exercises it ran.
 #define DOCTEST_CONFIG_IMPLEMENT
 #include "core/build_info.hpp"
 #include "core/exercise.hpp"
 
 #include <doctest/doctest.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <mutex>
 #include <regex>
+#include <set>
+#include <sstream>
 #include <string>
 
 namespace {
 
 std::string this_chapter;  // "02" for test_ch02, empty for test_common
 
+// The --solved value that adds `chapter` to what this build already takes from solutions/.
+std::string solved_with(const std::string& chapter) {
+    std::set<std::string> chapters{chapter};
+    std::stringstream list(rt::build_info::solved);
+    for (std::string ch; std::getline(list, ch, ';');)
+        if (!ch.empty()) chapters.insert(ch);
+    std::string out;
+    for (const std::string& ch : chapters) out += (out.empty() ? "" : ";") + ch;
+    return out;
+}
+
+// One line, however many the text had.
+std::string one_line(std::string s) {
+    std::replace(s.begin(), s.end(), '\n', ' ');
+    while (!s.empty() && s.back() == ' ') s.pop_back();
+    return s;
+}
+
+// Prints, for each failing test case, "[rtlab] failed: NAME | FIRST FAILURE | ran your
+// exercises: 10.1 10.4". The console reporter still prints everything in full above it.
+struct FailureLine : doctest::IReporter {
+    const doctest::ContextOptions& options;
+    const doctest::TestCaseData* test = nullptr;
+    std::string first;  // the first failed check of the current test case, with its context
+    std::mutex lock;    // checks may be made from several threads
+
+    explicit FailureLine(const doctest::ContextOptions& o) : options(o) {}
+
+    static std::string context() {
+        std::string out;
+        const int n = doctest::IReporter::get_num_active_contexts();
+        const doctest::IContextScope* const* scopes = doctest::IReporter::get_active_contexts();
+        for (int i = 0; i < n; ++i) {
+            std::ostringstream s;
+            scopes[i]->stringify(&s);
+            out += (out.empty() ? "" : "; ") + one_line(s.str());
+        }
+        return out.empty() ? "" : " [" + out + "]";
+    }
+
+    void test_case_start(const doctest::TestCaseData& t) override {
+        test = &t;
+        first.clear();
+        rt::exercise_use::clear();
+    }
+    void test_case_reenter(const doctest::TestCaseData&) override {}
+    void log_assert(const doctest::AssertData& a) override {
+        if (!a.m_failed) return;
+        std::lock_guard<std::mutex> hold(lock);
+        if (!first.empty()) return;
+        if (a.m_threw)
+            first = std::string(a.m_expr) + " threw: " + one_line(a.m_exception.c_str());
+        else
+            first = one_line(a.m_expr) + " is false: " + one_line(a.m_decomp.c_str());
+        first += context();
+    }
+    void log_message(const doctest::MessageData& m) override {
+        if (m.m_severity & doctest::assertType::is_warn) return;  // MESSAGE, WARN: not failures
+        std::lock_guard<std::mutex> hold(lock);
+        if (first.empty()) first = one_line(m.m_string.c_str()) + context();
+    }
+    void test_case_exception(const doctest::TestCaseException& e) override {
+        std::lock_guard<std::mutex> hold(lock);
+        if (first.empty()) first = (e.is_crash ? "crashed: " : "threw: ") + one_line(e.error_string.c_str());
+    }
+    void test_case_end(const doctest::CurrentTestCaseStats& stats) override {
+        if (stats.testCaseSuccess || !test) return;
+        const std::string ran = rt::exercise_use::list();
+        std::printf("[rtlab] failed: %s | %s | %s\n", test->m_name, first.empty() ? "(no message)" : first.c_str(),
+                    ran.empty() ? "ran none of your exercises" : ("ran your exercises " + ran).c_str());
+        std::fflush(stdout);
+    }
+
+    void report_query(const doctest::QueryData&) override {}
+    void test_run_start() override {}
+    void test_run_end(const doctest::TestRunStats&) override {}
+    void subcase_start(const doctest::SubcaseSignature&) override {}
+    void subcase_end() override {}
+    void test_case_skipped(const doctest::TestCaseData&) override {}
+};
+
 }  // namespace
+
+REGISTER_LISTENER("rtlab-failures", 1, FailureLine);
 
 REGISTER_EXCEPTION_TRANSLATOR(const rt::NotImplemented& e) {
     // The stub's message starts "exercise N.M (name) is not done yet"; chapter N is the
@@ -29,7 +118,7 @@ REGISTER_EXCEPTION_TRANSLATOR(const rt::NotImplemented& e) {
         if (chapter != this_chapter)
             return doctest::String(("needs exercise " + m[1].str() + "." + m[2].str() + " (" + m[3].str() +
                                     ", chapter " + chapter + "): solve it, or take chapter " + chapter +
-                                    " from solutions/ with -DRTLAB_SOLVED=\"" + chapter + "\"")
+                                    " from solutions/ with ./lab grade --solved \"" + solved_with(chapter) + "\"")
                                        .c_str());
     }
     return doctest::String(what.c_str());

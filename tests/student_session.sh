@@ -8,6 +8,8 @@
 # 3. The stored RTLAB_SOLVED is said every time and kept; an instructor's grading run in its
 #    own directory (as ./lab test does) changes nothing in the student's; bad values are refused.
 # 4. Fixing 2.2 raises the ch02 score: the wrong body was what failed.
+# 5. Issue 28's hygiene: the hint's ./lab grade form, --solved normalised and refused in one
+#    line, a warning for solved chapters over written bodies, ch08 graded without ch09.
 set -euo pipefail
 root=$1 work=$2 genex=$3
 passed=0 failed=0
@@ -36,6 +38,15 @@ exercise = re.sub(r"(// @exercise 2\.2 .*?\n).*?(\n\s*// @end)",
                   lambda m: m.group(1) + "    return false;  // a student's wrong answer" + m.group(2), exercise, 1, re.S)
 open(sys.argv[2], "w").write(exercise)
 PY
+# ... and a helper of their own in the file's helper region (defect 10): kept like a body.
+python3 - "$ex" <<'PY'
+import re, sys
+text = open(sys.argv[1]).read()
+helper = "namespace rt {\ninline Real my_square(Real x) { return x * x; }  // a student's helper\n}  // namespace rt\n"
+text = re.sub(r"(// @helpers\n).*?(// @end)", lambda m: m.group(1) + helper + m.group(2), text, 1, re.S)
+open(sys.argv[1], "w").write(text)
+PY
+grep -q "my_square" "$ex"
 cp "$ex" "$work/mine.cpp"
 
 out=$(tools/grade --build build/exercises --solved "01")
@@ -50,7 +61,7 @@ check "the scorecard names the chapters from solutions/" grep -q "chapters taken
 
 # Regenerating and checking keep both bodies.
 "$genex" solutions exercises >/dev/null
-check "./lab exercises keeps the student's bodies" cmp -s "$ex" mine.cpp
+check "./lab exercises keeps the student's bodies and helpers" cmp -s "$ex" mine.cpp
 check "the up-to-date check accepts a student's bodies" "$genex" solutions exercises --check
 check "the check wrote nothing" cmp -s "$ex" mine.cpp
 
@@ -83,6 +94,29 @@ PY
 out=$(tools/grade --build build/exercises)
 read -r q2 u2 _ _ <<<"$(score 02 "$out")"
 check "fixing 2.2 raises ch02 from $p2 to $q2 of $u2" test "$q2" -gt "$p2"
+
+# A hint names the ./lab grade form with every chapter the student needs (defect 6 of
+# issue 28): chapter 05's tests stop at 2.3, which is neither written nor solved.
+hint=$( (build/exercises/bin/test_ch05 --no-colors 2>&1 || true) | grep -o 'take chapter [0-9]* from solutions/ with [^)]*' | head -1)
+check "a stopped test says how to go on: '$hint'" grep -qx 'take chapter 02 from solutions/ with ./lab grade --solved "01;02"' <<<"$hint"
+
+# --solved is kept in one spelling, refused in one line when malformed, and a chapter taken
+# from solutions/ over bodies the student wrote is said (defect 8).
+out=$(tools/grade 01 --build build/exercises --solved "01;01")
+check "--solved \"01;01\" is stored as 01" grep -q "chapters taken from solutions/: 01$" <<<"$out"
+code=0
+err=$(tools/grade 01 --build build/exercises --solved "01;02;" 2>&1 >/dev/null) || code=$?
+check "--solved \"01;02;\" is refused in one line" test "$code" = 2 -a "$(wc -l <<<"$err")" = 1
+out=$(tools/grade 01 --build build/exercises --solved "01;02")
+check "a solved chapter over the student's bodies is warned about" \
+    grep -q "warning: chapter 02 is taken from solutions/, so your bodies of 2.1 2.2 in exercises/ch02_spheres.cpp are not graded" <<<"$out"
+check "every row says where its exercises came from" grep -qE "^ch01 .* solutions/" <<<"$out"
+
+# A chapter's grade needs only its own and earlier exercises (defect 5): chapter 08 gets full
+# marks with 09's stubs, as a program of chapter 08 takes the reference's later exercises.
+out=$(tools/grade 08 --build build/exercises --solved "01;02;03;04;05;06;07;08")
+read -r p8 t8 g8 h8 <<<"$(score 08 "$out")"
+check "ch08 full marks while chapter 09 is not done ($p8 of $t8, $g8 of $h8)" test "$p8" = "$t8" -a "$g8" = "$h8"
 
 echo "$passed passed, $failed failed"
 ((failed == 0))

@@ -7,6 +7,10 @@
 //
 // becomes the same two marker lines around
 //   throw NotImplemented("exercise 2.2 (sphere_roots) is not done yet: see book §2.3");
+// with, just above the first marker, RT_STUDENT_EXERCISE(2, 2): the student's copy records
+// that it ran, so the grader can name it when a test through it fails (core/exercise.hpp).
+// Each student copy also gets one region of its own, "// @helpers" ... "// @end", before
+// `namespace rt {`: the student's #includes and helper functions, kept like any body.
 //
 // A student's work is never lost. The generator owns everything outside the regions; the
 // bodies inside belong to whoever wrote them:
@@ -60,7 +64,13 @@ std::string trim(const std::string& s) {
 
 const std::regex kBegin(R"(^(\s*)// @exercise\s+(\S+)\s*\|\s*([^|]+?)\s*\|\s*(.+?)\s*$)");
 const std::regex kEnd(R"(^\s*// @end\s*$)");
-const std::regex kLooksLikeMarker(R"(^\s*//\s*@\s*exercise)");
+const std::regex kHelpers(R"(^\s*// @helpers\s*$)");
+const std::regex kLooksLikeMarker(R"(^\s*//\s*@\s*(exercise|helpers))");
+const std::string kHelpersId = "helpers";
+// The helper region's text until the student writes there.
+const std::string kHelpersStub =
+    "// Your #includes and helper functions, if any (inside namespace rt { ... } to use the\n"
+    "// library's names unqualified). ./lab exercises keeps these lines like an exercise body.\n";
 
 // A file cut at its exercise regions: the text outside (with a placeholder line where each
 // body was) and the bodies, by exercise number.
@@ -80,7 +90,17 @@ Parsed parse(const std::string& name, const std::string& text) {
     while (std::getline(in, line)) {
         ++number;
         std::smatch m;
-        if (std::regex_match(line, m, kBegin)) {
+        if (std::regex_match(line, kHelpers)) {
+            if (inside || p.body.count(kHelpersId))
+                throw Failure{name + ":" + std::to_string(number) + ": a second or nested @helpers region"};
+            inside = true;
+            open_line = number;
+            id = kHelpersId;
+            p.order.push_back(id);
+            p.body[id];
+            p.stub[id] = kHelpersStub;
+            p.outside += line + "\n\x01\n";
+        } else if (std::regex_match(line, m, kBegin)) {
             if (inside)
                 throw Failure{name + ":" + std::to_string(number) + ": @exercise inside another (opened at line " +
                               std::to_string(open_line) + ")"};
@@ -113,6 +133,33 @@ Parsed parse(const std::string& name, const std::string& text) {
 // The student copy of a solution: its outside text and the stub bodies.
 Parsed generate(const fs::path& source, const std::string& text) {
     Parsed solution = parse(source.string(), text);
+    if (solution.body.count(kHelpersId))
+        throw Failure{source.string() + ": @helpers is the student's; the generator adds it"};
+    // The mark above each exercise's first marker, and the helper region before the
+    // namespace, both in the text outside the bodies: the student's lines stay where they were.
+    std::string outside;
+    std::istringstream in(solution.outside);
+    std::string line;
+    bool helpers = false;
+    while (std::getline(in, line)) {
+        std::smatch m;
+        if (std::regex_match(line, m, kBegin)) {
+            const std::string id = m[2].str();
+            const auto dot = id.find('.');
+            if (dot == std::string::npos || id.find_first_not_of("0123456789.") != std::string::npos)
+                throw Failure{source.string() + ": exercise '" + id + "' is not numbered N.M"};
+            outside += m[1].str() + "RT_STUDENT_EXERCISE(" + id.substr(0, dot) + ", " + id.substr(dot + 1) +
+                       ");  // tells the grader this ran (core/exercise.hpp)\n";
+        } else if (!helpers && line == "namespace rt {") {
+            outside += "// @helpers\n\x01\n// @end\n\n";
+            solution.order.insert(solution.order.begin(), kHelpersId);
+            solution.stub[kHelpersId] = kHelpersStub;
+            helpers = true;
+        }
+        outside += line + '\n';
+    }
+    if (!helpers) throw Failure{source.string() + ": no \"namespace rt {\" line to put the helper region before"};
+    solution.outside = outside;
     solution.body = solution.stub;
     solution.outside = "// STUDENT COPY of solutions/" + source.filename().string() +
                        ", made by tools/gen_exercises.cpp.\n"

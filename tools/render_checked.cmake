@@ -2,6 +2,11 @@
 # and fails the calling test unless it exits 0 with no NaN or infinite sample; on a failed
 # render, REPORT (the text the grader shows) says why.
 function(render_checked output report)
+    # REPORT's .uses twin: the student's exercises the render went through (--stats), which
+    # the grader names beside a failed comparison.
+    string(REGEX REPLACE "\\.txt$" "" uses "${report}")
+    set(uses "${uses}.uses")
+    file(REMOVE "${uses}")
     # A render that hangs (an exercise that never returns) fails in a minute, not at ctest's
     # timeout: the golden images at the tests' sizes take a second or two, under ASan too.
     execute_process(COMMAND ${CHAPTER} --scene ${SCENE} ${ARGN} -o ${output} --stats TIMEOUT 60
@@ -14,6 +19,10 @@ function(render_checked output report)
         endif()
         file(WRITE "${report}" "render failed: ${err}")
         message(FATAL_ERROR "render of ${SCENE} (${ARGN}) failed (exit ${code}): ${err}")
+    endif()
+    string(JSON ran ERROR_VARIABLE no_ran GET "${stats}" your_exercises)
+    if(NOT no_ran AND NOT ran STREQUAL "")
+        file(WRITE "${uses}" "${ran}")
     endif()
     string(JSON nonfinite GET "${stats}" nonfinite_samples)
     if(NOT nonfinite EQUAL 0)

@@ -2,6 +2,7 @@
 
 #include "app/ray_tree_svg.hpp"
 #include "core/build_info.hpp"
+#include "core/exercise.hpp"
 #include "core/text.hpp"
 #include "core/version.hpp"
 #include "geometry/limits.hpp"
@@ -138,6 +139,9 @@ json stats_json(const std::string& chapter, const SceneEntry& entry, const Scene
            {"real", real_name()},
            {"track", build_info::track},
            {"from_solutions", build_info::from_solutions},
+           // The student's exercises this render went through (the grader names them when a
+           // golden image fails; core/exercise.hpp): "" in the solutions track.
+           {"your_exercises", exercise_use::list()},
            {"rays", rays},
            {"random_numbers", draws},
            {"shading", {{"light_terms", r.counters.light_terms}, {"specular_terms", r.counters.specular_terms}}},

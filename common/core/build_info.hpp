@@ -6,4 +6,5 @@
 namespace rt::build_info {
 extern const char* const track;           // "solutions" or "exercises"
 extern const char* const from_solutions;  // e.g. "all", "none", "01 02", "01, and 06-18 (after ch05)"
+extern const char* const solved;          // RTLAB_SOLVED as given, e.g. "01;02" (exercises track)
 }  // namespace rt::build_info

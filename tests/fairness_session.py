@@ -1,0 +1,211 @@
+#!/usr/bin/env python3
+"""The fairness session (issue 28): is the grader fair to answers that differ from solutions/?
+
+    fairness_session.py ROOT WORK_DIR [VARIANT ...]
+
+On a copy of the lab in WORK_DIR (the student's exercises/ are never touched), every exercise is
+answered with the reference's body, and each variant of tests/fairness/ (or only those named)
+takes the place of one of them. tools/grade then grades the variant's chapter, and:
+
+- a `pass` variant (a correct answer that differs legitimately) must get full marks, unit tests
+  and images;
+- a `fail` variant (a subtly wrong one) must not, and a failure line must name its exercise:
+  a unit test named for it ("11.2 ..."), or a failure that says it ran it; with `expect: TEXT`,
+  one of the chapter's failure lines must also contain TEXT (e.g. "crashed");
+- either way the chapter's unit-test denominator is the reference's: nothing a student writes
+  changes it.
+
+A variant file:  // fairness 11.2 fail: why ...   then optional comment lines (and "// expect: TEXT",
+"// images" to grade a fail variant's images too), an optional "// @helpers" section (lines
+for the file's helper region), and "// @body" followed by the body.
+
+To keep it quick, variants share rounds: one grade per round, on the round's chapters only.
+A wrong body in chapter c also reaches the programs of later chapters (they link the
+student's exercises up to theirs), so a round holds at most one fail variant, and only pass
+variants of earlier chapters beside it. Fail variants are graded on their unit tests only
+(tools/grade --units) unless they say "// images".
+"""
+import os
+import re
+import shutil
+import subprocess
+import sys
+from pathlib import Path
+
+HEADER = re.compile(r"^// fairness (\d+)\.(\d+) (pass|fail): (.+)$")
+
+
+class Variant:
+    def __init__(self, path):
+        self.path = path
+        self.name = path.stem
+        lines = path.read_text().splitlines()
+        m = HEADER.match(lines[0]) if lines else None
+        if not m:
+            raise SystemExit(f"{path}: the first line must be '// fairness N.M pass|fail: why'")
+        self.chapter = f"{int(m[1]):02d}"
+        self.exercise = f"{int(m[1])}.{m[2]}"
+        self.verdict = m[3]
+        self.why = m[4]
+        self.expect = None
+        self.images = self.verdict == "pass"
+        self.helpers = ""
+        section = None
+        body = []
+        for line in lines[1:]:
+            if section is None:
+                if line.startswith("// expect:"):
+                    self.expect = line.split(":", 1)[1].strip()
+                elif line.strip() == "// images":
+                    self.images = True
+                elif line.strip() == "// @helpers":
+                    section = "helpers"
+                elif line.strip() == "// @body":
+                    section = "body"
+            elif section == "helpers":
+                if line.strip() == "// @body":
+                    section = "body"
+                else:
+                    self.helpers += line + "\n"
+            else:
+                body.append(line)
+        if section != "body":
+            raise SystemExit(f"{path}: no '// @body' line")
+        self.body = "\n".join(body).rstrip("\n") + "\n"
+
+
+def region(text, opener):
+    """The span of the body between the line matching `opener` and its // @end."""
+    m = re.search(r"(^[ \t]*" + opener + r"[^\n]*\n)(.*?)(^[ \t]*// @end[ \t]*$)", text, re.S | re.M)
+    if not m:
+        raise SystemExit(f"no region '{opener}'")
+    return m.start(2), m.end(2)
+
+
+def put(text, opener, body):
+    a, b = region(text, opener)
+    return text[:a] + body + text[b:]
+
+
+def exercise_file(root, work, chapter, variant):
+    """The chapter's exercise file with the reference's bodies and the variant's one."""
+    solution = next((root / "solutions").glob(f"ch{chapter}_*.cpp"))
+    target = work / "exercises" / solution.name
+    stub = target.read_text()
+    reference = solution.read_text()
+    for m in re.finditer(r"^[ \t]*// @exercise (\S+) \|", reference, re.M):
+        number = m[1]
+        a, b = region(reference, r"// @exercise " + re.escape(number) + r" \|")
+        stub = put(stub, r"// @exercise " + re.escape(number) + r" \|", reference[a:b])
+    if variant:
+        stub = put(stub, r"// @exercise " + re.escape(variant.exercise) + r" \|", variant.body)
+        if variant.helpers:
+            stub = put(stub, r"// @helpers", variant.helpers)
+    target.write_text(stub)
+
+
+def rounds(variants):
+    """Rounds of variants as the module doc says."""
+    fails = sorted((v for v in variants if v.verdict == "fail"), key=lambda v: (v.chapter, v.name))
+    passes = sorted((v for v in variants if v.verdict == "pass"), key=lambda v: (v.chapter, v.name))
+    out = []
+    for f in fails:
+        group = [f]
+        for p in list(passes):
+            if p.chapter < f.chapter and all(p.chapter != g.chapter for g in group):
+                group.append(p)
+                passes.remove(p)
+        out.append(group)
+    while passes:
+        group = []
+        for p in list(passes):
+            if all(p.chapter != g.chapter for g in group):
+                group.append(p)
+                passes.remove(p)
+        out.append(group)
+    return out
+
+
+def score(out, chapter):
+    m = re.search(rf"^ch{chapter} +(\d+) of (\d+) +(?:(\d+) of (\d+)|\(not run\))", out, re.M)
+    if not m:
+        return None
+    return [int(x) if x is not None else None for x in m.groups()]
+
+
+def main():
+    if len(sys.argv) < 3:
+        raise SystemExit(__doc__.split("\n\n")[1])
+    root = Path(sys.argv[1]).resolve()
+    work = Path(sys.argv[2]).resolve()
+    wanted = set(sys.argv[3:])
+    variants = [Variant(p) for p in sorted((root / "tests" / "fairness").glob("*.cpp"))]
+    if wanted:
+        variants = [v for v in variants if v.name in wanted]
+    chapters = re.search(r"^set\(RTLAB_CHAPTERS (.*)\)$", (root / "CMakeLists.txt").read_text(), re.M)[1].split()
+
+    shutil.rmtree(work, ignore_errors=True)
+    ignore = shutil.ignore_patterns(".git", "build", "out")
+    shutil.copytree(root, work, ignore=ignore, symlinks=True)
+    # Every exercise answered as the reference does, as a student who finished them all: then
+    # one configuration serves every round (no --solved to change), and a round recompiles
+    # only the files of its variants.
+    for c in chapters:
+        exercise_file(root, work, c, None)
+    pristine = {p.name: p.read_text() for p in (work / "exercises").glob("*.cpp")}
+    build = work / "build" / "exercises"
+    env = dict(os.environ)
+
+    passed = failed = 0
+    # Each chapter's denominator, counted in its source: what the grade must say, whatever runs.
+    totals = {c: len(re.findall(r"^\s*TEST_CASE\(", (root / "tests" / f"test_ch{c}.cpp").read_text(), re.M))
+              for c in chapters}
+
+    def check(ok, what):
+        nonlocal passed, failed
+        if ok:
+            passed += 1
+        else:
+            failed += 1
+            print(f"FAIL: {what}")
+
+    for group in rounds(variants):
+        for name, text in pristine.items():
+            (work / "exercises" / name).write_text(text)
+        for v in group:
+            exercise_file(root, work, v.chapter, v)
+        mine = sorted({v.chapter for v in group})
+        units = all(not v.images for v in group)
+        command = ["tools/grade", *mine, "--build", str(build), "--solved", ""] + (["--units"] if units else [])
+        run = subprocess.run(command, cwd=work, env=env, capture_output=True, text=True)
+        out = run.stdout + run.stderr
+        print(f"-- round {', '.join(v.name for v in group)}: grade {' '.join(mine)}{' --units' if units else ''}")
+        for v in group:
+            s = score(out, v.chapter)
+            if s is None:
+                check(False, f"{v.name}: no scorecard row for ch{v.chapter}:\n{out}")
+                continue
+            unit_ok, unit_total, g_ok, g_total = s
+            full = unit_ok == unit_total and (g_ok is None or g_ok == g_total)
+            lines = [l for l in out.splitlines() if l.startswith(f"  ch{v.chapter} ")]
+            row = f"ch{v.chapter} {unit_ok} of {unit_total}" + ("" if g_ok is None else f", images {g_ok} of {g_total}")
+            check(unit_total == totals[v.chapter],
+                  f"{v.name}: the denominator is {unit_total}; tests/test_ch{v.chapter}.cpp has {totals[v.chapter]}")
+            if v.verdict == "pass":
+                check(full, f"{v.name} (a correct answer: {v.why}) did not get full marks: {row}\n" + "\n".join(lines))
+            else:
+                check(not full, f"{v.name} (wrong: {v.why}) got full marks: {row}")
+                ex = re.escape(v.exercise)
+                named = [l for l in lines
+                         if re.search(rf'unit test "{ex} ', l) or re.search(rf"ran your exercises [0-9. ]*\b{ex}\b", l)]
+                check(bool(named), f"{v.name}: no failure line names exercise {v.exercise}:\n" + "\n".join(lines))
+                if v.expect:
+                    check(any(v.expect in l for l in lines),
+                          f"{v.name}: no failure line says '{v.expect}':\n" + "\n".join(lines))
+            print(f"   {v.name} ({v.verdict}): {row}" + (f"; {lines[0].strip()[:160]}" if lines else ""))
+    print(f"fairness session: {passed} checks passed, {failed} failed ({len(variants)} variants)")
+    return 1 if failed else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
