@@ -32,6 +32,9 @@ import subprocess
 import sys
 from pathlib import Path
 
+sys.path.insert(0, str(Path(__file__).resolve().parent))
+from checks import check, finish  # noqa: E402  (the tally the test scripts share)
+
 HEADER = re.compile(r"^// fairness (\d+)\.(\d+) (pass|fail): (.+)$")
 
 
@@ -156,18 +159,9 @@ def main():
     build = work / "build" / "exercises"
     env = dict(os.environ)
 
-    passed = failed = 0
     # Each chapter's denominator, counted in its source: what the grade must say, whatever runs.
     totals = {c: len(re.findall(r"^\s*TEST_CASE\(", (root / "tests" / f"test_ch{c}.cpp").read_text(), re.M))
               for c in chapters}
-
-    def check(ok, what):
-        nonlocal passed, failed
-        if ok:
-            passed += 1
-        else:
-            failed += 1
-            print(f"FAIL: {what}")
 
     for group in rounds(variants):
         for name, text in pristine.items():
@@ -203,9 +197,8 @@ def main():
                     check(any(v.expect in l for l in lines),
                           f"{v.name}: no failure line says '{v.expect}':\n" + "\n".join(lines))
             print(f"   {v.name} ({v.verdict}): {row}" + (f"; {lines[0].strip()[:160]}" if lines else ""))
-    print(f"fairness session: {passed} checks passed, {failed} failed ({len(variants)} variants)")
-    return 1 if failed else 0
+    finish(f"fairness session ({len(variants)} variants)")
 
 
 if __name__ == "__main__":
-    sys.exit(main())
+    main()
