@@ -1,4 +1,7 @@
-// fairness 10.3 pass: x
+// fairness 10.3 pass: the midpoint build mirrored (centres at or above the middle go left) and,
+// when every centre falls on one side, the list sorted along the axis before it is halved (a
+// median split, where the reference halves the list as it stands): every primitive in one leaf
+// and the recursion ends, as the contract asks; the tree differs, the hits do not
 // @body
     if (primitives.size() == 1) return builder.primitive(primitives[0]);
     Box box;
