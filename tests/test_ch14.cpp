@@ -10,7 +10,6 @@
 #include <algorithm>
 #include <cmath>
 #include <set>
-#include <utility>
 #include <vector>
 
 using namespace rt;
@@ -77,7 +76,9 @@ TEST_CASE("14.1 stratified_point: the largest u below 1 stays below 1") {
 TEST_CASE("14.2 tent_offset: worked values, monotone, and the tent's distribution") {
     // Worked values, to a few ulps (the square roots are exact here, but another correct form
     // of the inverse may round differently).
-    for (const auto& [u, x] : {std::pair{0.0, -1.0}, {0.125, -0.5}, {0.5, 0.0}, {0.875, 0.5}}) {
+    const double worked[][2] = {{0.0, -1.0}, {0.125, -0.5}, {0.5, 0.0}, {0.875, 0.5}};  // u, x
+    for (const auto& pair : worked) {
+        const double u = pair[0], x = pair[1];
         const Real got = tent_offset(Real(u));
         CAPTURE(u);
         CAPTURE(got);
