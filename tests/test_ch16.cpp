@@ -80,6 +80,7 @@ TEST_CASE("16.1 lens_point: the disk lens is the unit disk, centred and uniform"
             const double degrees[2] = {10 + 30.0 * sector, 40 + 30.0 * sector};
             CAPTURE(radii);
             CAPTURE(degrees);
+            CAPTURE(count);
             CAPTURE(share);
             RT_CHECK_FIRST(failures, std::abs(count - share) < 0.03 * share);
         }
