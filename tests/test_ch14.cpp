@@ -15,37 +15,75 @@
 using namespace rt;
 using rt::test::kEps;
 
-TEST_CASE("14.1 stratified_point: one sample in each of the n x n strata") {
-    CHECK(stratified_point(0, 1, Vec2(0.25, 0.75)) == Vec2(0.25, 0.75));
-    const Vec2 p = stratified_point(5, 4, Vec2(0.5, 0.5));  // stratum (1, 1) of 4 x 4
-    CHECK(p.x == Real(0.375));
-    CHECK(p.y == Real(0.375));
-    const Vec2 q = stratified_point(11, 4, Vec2(0, 0.5));  // stratum (3, 2)
-    CHECK(q.x == Real(0.75));
-    CHECK(q.y == Real(0.625));
-    for (int n : {1, 2, 3, 7, 32}) {
-        std::set<std::pair<int, int>> seen;
-        for (int k = 0; k < n * n; ++k) {
-            const Vec2 u(Real(k % 5) / 5, Real(k % 3) / 3);
-            const Vec2 s = stratified_point(k, n, u);
-            CHECK(s.x >= 0);
-            CHECK(s.x < 1);
-            CHECK(s.y >= 0);
-            CHECK(s.y < 1);
-            seen.insert({int(std::floor(s.x * Real(n))), int(std::floor(s.y * Real(n)))});
-        }
-        CHECK(seen.size() == std::size_t(n * n));
-    }
-    // The largest u below 1 stays inside its stratum, hence below 1.
+namespace {
+
+// A few units in the last place of numbers below 1: how far from the exact (s + u) / n a
+// stratified point may land. x / n and x * (1.0 / n) differ by one such unit, and a point at
+// a stratum's edge may round into the next stratum by that much: both are right.
+constexpr Real kUlps = 4 * kEps;
+
+}  // namespace
+
+TEST_CASE("14.1 stratified_point: sample k at offset u in stratum (k mod n, k div n)") {
+    // Each point against (sx + u) / n, to a few ulps, for offsets at a stratum's low edge, in
+    // its middle and near its high edge, over patterns of several sizes.
+    int failures = 0, points = 0;
+    for (const int n : {1, 2, 3, 4, 7, 10, 32})
+        for (int k = 0; k < n * n; ++k)
+            for (const Vec2 u : {Vec2(0, 0), Vec2(0.5, 0.25), Vec2(Real(k % 5) / 5, Real(k % 3) / 3),
+                                 Vec2(Real(0.999), Real(0.001))}) {
+                const Vec2 point = stratified_point(k, n, u);
+                const int sx = k % n, sy = k / n;
+                const Vec2 want((Real(sx) + u.x) / Real(n), (Real(sy) + u.y) / Real(n));
+                const Vec2 stratum_low(Real(sx) / Real(n), Real(sy) / Real(n));
+                const Vec2 stratum_high(Real(sx + 1) / Real(n), Real(sy + 1) / Real(n));
+                CAPTURE(k);
+                CAPTURE(n);
+                CAPTURE(u);
+                CAPTURE(point);
+                CAPTURE(want);
+                CAPTURE(stratum_low);
+                CAPTURE(stratum_high);
+                RT_CHECK_FIRST(failures, std::abs(point.x - want.x) <= kUlps);
+                RT_CHECK_FIRST(failures, std::abs(point.y - want.y) <= kUlps);
+                RT_CHECK_FIRST(failures, point.x >= 0);
+                RT_CHECK_FIRST(failures, point.y >= 0);
+                RT_CHECK_FIRST(failures, point.x < 1);
+                RT_CHECK_FIRST(failures, point.y < 1);
+                ++points;
+            }
+    CHECK(failures == 0);
+    CHECK(points > 4000);
+}
+
+TEST_CASE("14.1 stratified_point: the largest u below 1 stays below 1") {
+    // (n - 1 + u) / n rounds up to exactly 1 for u just below 1 (in every form: divided by n
+    // or times 1 / n). The contract keeps every point in [0, 1)^2, so something must stop it.
     const Real below_one = 1 - kEps / 2;
-    CHECK(stratified_point(1023, 32, Vec2(below_one)).x < 1);
+    for (const int n : {1, 3, 32}) {
+        const Vec2 u(below_one);
+        const Vec2 point = stratified_point(n * n - 1, n, u);
+        CAPTURE(n);
+        CAPTURE(u);
+        CAPTURE(point);
+        CHECK(point.x < 1);
+        CHECK(point.y < 1);
+        CHECK(point.x >= 1 - 2 * kUlps);
+        CHECK(point.y >= 1 - 2 * kUlps);
+    }
 }
 
 TEST_CASE("14.2 tent_offset: worked values, monotone, and the tent's distribution") {
-    CHECK(tent_offset(0) == -1);
-    CHECK(tent_offset(Real(0.125)) == Real(-0.5));
-    CHECK(tent_offset(Real(0.5)) == 0);
-    CHECK(tent_offset(Real(0.875)) == Real(0.5));
+    // Worked values, to a few ulps (the square roots are exact here, but another correct form
+    // of the inverse may round differently).
+    const double worked[][2] = {{0.0, -1.0}, {0.125, -0.5}, {0.5, 0.0}, {0.875, 0.5}};  // u, x
+    for (const auto& pair : worked) {
+        const double u = pair[0], x = pair[1];
+        const Real got = tent_offset(Real(u));
+        CAPTURE(u);
+        CAPTURE(got);
+        CHECK(std::abs(got - Real(x)) <= kUlps);
+    }
     CHECK(tent_offset(1 - kEps / 2) < 1);
     // Its distribution function is (1 + x)^2 / 2 left of 0 and 1 - (1 - x)^2 / 2 right of it:
     // the share of 100,000 evenly spread u below each x is that, to the spacing.
@@ -57,6 +95,8 @@ TEST_CASE("14.2 tent_offset: worked values, monotone, and the tent's distributio
         const double share = double(std::lower_bound(xs.begin(), xs.end(), Real(x)) - xs.begin()) / double(n);
         const double want = x < 0 ? (1 + x) * (1 + x) / 2 : 1 - (1 - x) * (1 - x) / 2;
         CAPTURE(x);
+        CAPTURE(share);
+        CAPTURE(want);
         CHECK(std::abs(share - want) <= 2.0 / n);
     }
 }

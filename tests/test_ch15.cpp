@@ -13,6 +13,7 @@
 #include <map>
 #include <numeric>
 #include <set>
+#include <string>
 #include <vector>
 
 using namespace rt;
@@ -25,7 +26,10 @@ TEST_CASE("15.1 fisher_yates: a permutation, and every order equally often") {
         fisher_yates(order, random);
         std::vector<std::uint32_t> sorted = order;
         std::sort(sorted.begin(), sorted.end());
-        for (std::size_t k = 0; k < n; ++k) CHECK(sorted[k] == k);
+        CAPTURE(n);
+        int failures = 0;
+        for (std::size_t k = 0; k < n; ++k) RT_CHECK_FIRST(failures, sorted[k] == k);  // each item once
+        CHECK(failures == 0);
     }
     // The 6 orders of 3 items over 60,000 shuffles: each 10,000 +- 91 (one standard
     // deviation); 500 is 5.5 of them. A shuffle that swaps with any item (not only 0..i)
@@ -39,7 +43,9 @@ TEST_CASE("15.1 fisher_yates: a permutation, and every order equally often") {
     CHECK(seen.size() == 6);
     for (const auto& entry : seen) {
         const int count = entry.second;  // a named copy: clang 14 cannot capture a structured binding
-        CAPTURE(count);
+        const std::string order = std::to_string(entry.first[0]) + std::to_string(entry.first[1]) +
+                                  std::to_string(entry.first[2]);  // "120": item 1 first, then 2, then 0
+        CAPTURE(order);
         CHECK(std::abs(count - 10000) < 500);
     }
     // Where the first item of 16 ends up: uniform over the 16 places.
@@ -50,18 +56,38 @@ TEST_CASE("15.1 fisher_yates: a permutation, and every order equally often") {
         fisher_yates(order, random);
         ++place[std::size_t(std::find(order.begin(), order.end(), 0u) - order.begin())];
     }
-    for (int count : place) CHECK(std::abs(count - 2000) < 250);  // sigma 43
+    for (std::size_t where = 0; where < place.size(); ++where) {
+        const int count = place[where];
+        CAPTURE(where);
+        CHECK(std::abs(count - 2000) < 250);  // sigma 43
+    }
 }
 
 TEST_CASE("15.2 light_point: the corner plus u along one edge and v along the other") {
+    // Which edge u runs along is the student's choice (the light is the same parallelogram,
+    // and the strata shuffled against the pixel's make either way as good): the test finds
+    // it from (1, 0) and checks every point against that choice.
     Light light;
     light.type = Light::Type::parallelogram;
     light.position = Vec3(1, 2, 3);
     light.edge_a = Vec3(2, 0, 0);
     light.edge_b = Vec3(0, 1, 4);
     CHECK(light_point(light, Vec2(0, 0)) == Vec3(1, 2, 3));
-    CHECK(light_point(light, Vec2(0.5, 0.25)) == Vec3(2, 2.25, 4));
-    CHECK(light_point(light, Vec2(0.75, 0.5)) == Vec3(2.5, 2.5, 5));
+    const Vec3 along_u = light_point(light, Vec2(1, 0)) - light.position;
+    const Real tolerance = 8 * rt::test::kEps * 8;  // a few ulps of coordinates up to 8
+    const bool u_along_a = glm::length(along_u - light.edge_a) <= tolerance;
+    const bool u_along_b = glm::length(along_u - light.edge_b) <= tolerance;
+    CAPTURE(along_u);
+    REQUIRE((u_along_a || u_along_b));
+    const Vec3 edge_u = u_along_a ? light.edge_a : light.edge_b, edge_v = u_along_a ? light.edge_b : light.edge_a;
+    for (const Vec2 uv : {Vec2(0, 1), Vec2(0.5, 0.25), Vec2(0.75, 0.5), Vec2(0.125, 0.875)}) {
+        const Vec3 point = light_point(light, uv);
+        const Vec3 want = light.position + uv.x * edge_u + uv.y * edge_v;
+        CAPTURE(uv);
+        CAPTURE(point);
+        CAPTURE(want);
+        CHECK(glm::length(point - want) <= tolerance);
+    }
     // At the centre: where chapter 05's shading (no shadows) puts the whole light.
     const LightSample centre = light.sample(Vec3(2, 0, 5));
     CHECK(centre.distance == doctest::Approx(2.5));

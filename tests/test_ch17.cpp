@@ -22,6 +22,7 @@ TEST_CASE("17.1 glossy_direction: the mirror direction moved across a square of 
     // Worked values in the course's frame for r = +z: u = (0, -1, 0), v = (1, 0, 0).
     const Vec3 z(0, 0, 1);
     const Vec3 g = glossy_direction(z, Real(0.2), Vec2(0.75, 0.25));
+    CAPTURE(g);
     CHECK(g.x == doctest::Approx(-0.05));
     CHECK(g.y == doctest::Approx(-0.05));
     CHECK(g.z == doctest::Approx(1));
@@ -30,14 +31,20 @@ TEST_CASE("17.1 glossy_direction: the mirror direction moved across a square of 
     for (Real a : {Real(0.05), Real(0.3), Real(1.5)}) {
         const int n = 64;
         double mean_x = 0, mean_y = 0, mean_z = 0, spread = 0, farthest = 0;
+        int failures = 0;
         for (int i = 0; i < n; ++i)
             for (int j = 0; j < n; ++j) {
-                const Vec3 off = glossy_direction(r, a, Vec2((i + 0.5) / n, (j + 0.5) / n)) - r;
-                CHECK(std::abs(glm::dot(off, r)) < 1e-5);
+                const Vec2 uv((i + 0.5) / n, (j + 0.5) / n);
+                const Vec3 off = glossy_direction(r, a, uv) - r;
+                CAPTURE(a);
+                CAPTURE(uv);
+                CAPTURE(off);
+                RT_CHECK_FIRST(failures, std::abs(glm::dot(off, r)) < 1e-5);  // square to r
                 mean_x += off.x, mean_y += off.y, mean_z += off.z;
                 spread += glm::dot(off, off);
                 farthest = std::max(farthest, double(glm::length(off)));
             }
+        CHECK(failures == 0);
         CAPTURE(a);
         CHECK(std::abs(mean_x) / (n * n) < 1e-5);
         CHECK(std::abs(mean_y) / (n * n) < 1e-5);

@@ -33,23 +33,34 @@ TEST_CASE("18.1 shutter_time: stratum k of n, inside the shutter interval") {
 }
 
 TEST_CASE("18.2 swept_box: the box of both ends holds the sphere at every time") {
-    const Sphere s(Vec3(0, 0, 0), 1, Vec3(2, -1, 0));
+    // Centre (1, 2, 3), radius 1, moving by (2, -1, 0): the box of the sphere at time 0,
+    // [0, 1, 2] to [2, 3, 4], and at time 1, [2, 0, 2] to [4, 2, 4], together.
+    const Sphere s(Vec3(1, 2, 3), 1, Vec3(2, -1, 0));
     const Box b = swept_box(s);
-    CHECK(b.min == Vec3(-1, -2, -1));
-    CHECK(b.max == Vec3(3, 1, 1));
+    CHECK(b.min == Vec3(0, 0, 2));
+    CHECK(b.max == Vec3(4, 3, 4));
     CHECK(bounding_box(s).min == b.min);  // what the search structures use
+    CHECK(bounding_box(s).max == b.max);
+    int failures = 0;
     for (int k = 0; k <= 100; ++k) {
-        const Sphere at = s.at(Real(k) / 100);
-        const Box a = bounding_box(at);
+        const Real time = Real(k) / 100;
+        const Box at = bounding_box(s.at(time));
+        CAPTURE(time);
+        CAPTURE(at);
+        CAPTURE(b);
         for (int i = 0; i < 3; ++i) {
-            CHECK(a.min[i] >= b.min[i]);
-            CHECK(a.max[i] <= b.max[i]);
+            RT_CHECK_FIRST(failures, at.min[i] >= b.min[i]);
+            RT_CHECK_FIRST(failures, at.max[i] <= b.max[i]);
         }
     }
-    // A still sphere's box is its own.
-    const Sphere still(Vec3(1, 2, 3), 2);
-    CHECK(bounding_box(still).min == Vec3(-1, 0, 1));
-    CHECK(bounding_box(still).max == Vec3(3, 4, 5));
+    CHECK(failures == 0);
+    // Moving the other way along every axis, and not moving at all: still the smallest box.
+    const Box back = swept_box(Sphere(Vec3(1, 2, 3), Real(0.5), Vec3(-3, -2, -1)));
+    CHECK(back.min == Vec3(-2.5, -0.5, 1.5));
+    CHECK(back.max == Vec3(1.5, 2.5, 3.5));
+    const Box still = swept_box(Sphere(Vec3(1, 2, 3), 2));
+    CHECK(still.min == Vec3(-1, 0, 1));
+    CHECK(still.max == Vec3(3, 4, 5));
 }
 
 TEST_CASE("moving spheres: every structure returns brute force's hit at every time") {
@@ -59,6 +70,8 @@ TEST_CASE("moving spheres: every structure returns brute force's hit at every ti
     CHECK(list.moves());
     rt::test::RaySet set = rt::test::random_rays(rt::test::kRandomRays / 2);
     for (Ray& r : set.rays) r.time = rng(0, 1);
+    // Brute force tests every sphere; each structure finds a moving one through its box.
+    INFO("the moving spheres' boxes come from exercise 18.2 (swept_box)");
     CHECK(rt::test::disagreements(list, set.rays, set.intervals, kAccelKinds) == 0);
     // The reason for the swept box: at time 1 a sphere can stand wholly outside its box at
     // time 0, and a structure built from that box would never test it there.

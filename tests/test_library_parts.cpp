@@ -1,16 +1,21 @@
 // Library code of chapters 13 and 14 that no exercise touches, tested in the common
 // executable so that the chapters' own tests all depend on the exercises (with the stubs,
 // every one of them fails): drop_thin and the refusal of operands that are not solids
-// (book §13), and the statistical image test of tools/ztest.hpp (book §14.6).
+// (book §13), and the statistical image test of tools/ztest.hpp (book §14.6). Also evidence
+// the book cites that needs the reference exercises, not a student's: the textbook sphere
+// roots' lost digits (book §2.6).
 #include "geometry/procedural.hpp"
 #include "geometry/shape.hpp"
+#include "geometry/sphere.hpp"
 #include "io/scene_file.hpp"
 #include "render/render.hpp"
 #include "render/strata.hpp"
 #include "support.hpp"
 #include "support/span_check.hpp"
+#include "support/sphere_reference.hpp"
 #include "ztest.hpp"
 
+#include <algorithm>
 #include <memory>
 #include <string>
 #include <vector>
@@ -221,4 +226,27 @@ TEST_CASE("Sampler: a second point in a dimension is independent of the first") 
     }
     // 32,000 products of spread about 0.2: the mean is 0.25 to within 0.004 (3.5 sigma).
     CHECK(std::abs(sum / n - 0.25) < 0.004);
+}
+
+TEST_CASE("the textbook sphere roots lose digits at a far sphere's silhouette (why exercise 2.2 exists)") {
+    // Evidence for book §2.6, not a grade: the common program links every exercise from
+    // solutions/, so this compares the reference's 2.1 (the course's formula, as printed)
+    // with its 2.2 on the same rays. A student's 2.1 is not asked to be inaccurate.
+    Real worst_textbook = 0, worst_stable = 0;
+    int textbook_misses = 0;
+    rt::test::far_sphere_rays(1e4, Real(0.99), 5000, [&](const Ray& r, const Vec3& c) {
+        long double ref_near = 0, ref_far = 0;
+        REQUIRE(rt::test::reference_roots(r, c, 1, ref_near, ref_far));
+        Real tn, tf;
+        if (sphere_roots_textbook(r, c, 1, tn, tf))
+            worst_textbook = std::max(worst_textbook, rt::test::rel_error(tn, ref_near));
+        else
+            ++textbook_misses;
+        REQUIRE(sphere_roots(r, c, 1, tn, tf));
+        worst_stable = std::max(worst_stable, rt::test::rel_error(tn, ref_near));
+    });
+    const Real eps = rt::test::kEps;
+    MESSAGE("Real=" << std::string(real_name()) << ": textbook worst " << worst_textbook / eps << " eps, "
+                    << textbook_misses << " false misses; stable worst " << worst_stable / eps << " eps");
+    CHECK((textbook_misses > 0 || worst_textbook > 100 * std::max(worst_stable, eps)));
 }

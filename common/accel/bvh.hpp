@@ -14,7 +14,11 @@ namespace rt {
 
 // Exercise 10.1: does the ray meet the box for some t in the interval? The slab test with
 // the reciprocal trick (course §9.9.1), the far distance padded by a few ulps so rounding
-// never loses a hit; a NaN (a ray lying in a slab's plane) must not reject.
+// never loses a hit; a NaN (a ray lying in a slab's plane) must not reject. The box and the
+// interval are closed: a ray that only touches a face, an edge or a corner, or starts on
+// one, or lies in a face's plane, meets the box, with +0 and -0 direction components alike;
+// a ray through an edge or corner at t meets it in an interval that ends or starts at t.
+// Never a hit: the empty box, a NaN end of the interval, a box wholly outside the interval.
 bool hit_box(const Box& box, const Ray& ray, Interval interval);
 
 // A child: a node's index, or (top bit set) a primitive's.
@@ -52,11 +56,14 @@ private:
 
 // Exercise 10.2: the course's first build. Sort the primitives by their centre along `axis`,
 // put the first half in the left subtree and the rest in the right, the children split
-// along the next axis. One primitive is its own reference (no node).
+// along the next axis. One primitive is its own reference (no node). For an odd count
+// either half may take the odd one; the tree is balanced either way (depth ceil(log2 n)).
 BvhRef build_sorted(BvhBuilder& builder, std::span<std::uint32_t> primitives, int axis);
 
 // Exercise 10.3: the course's second build. Split at the midpoint of the primitives' box
-// along `axis`; when every centre falls on one side, split the list in half instead.
+// along `axis`, each side to one child (which side goes left is yours to choose); when
+// every centre falls on one side, split the list in half instead (how it is ordered first
+// is yours too), so the recursion always ends. Every primitive ends in exactly one leaf.
 BvhRef build_midpoint(BvhBuilder& builder, std::span<std::uint32_t> primitives, int axis);
 
 enum class BvhBuild { sorted, midpoint, sah };

@@ -33,12 +33,15 @@ std::optional<PixelFilter> pixel_filter(const std::string& name);
 std::optional<int> pattern_side(int spp);
 
 // Exercise 14.1: sample k (0 <= k < n * n) of an n x n stratified pattern over the unit
-// square: stratum (k mod n, k div n), at offset u in [0, 1)^2 inside it.
+// square: stratum (k mod n, k div n), at offset u in [0, 1)^2 inside it, that is
+// ((k mod n + u.x) / n, (k div n + u.y) / n) to within a few units in the last place (so
+// x * (1 / n) will do as well as x / n, though at a stratum's edge the two can fall on
+// either side of it). Always inside [0, 1)^2: rounding must not push a point to 1.
 Vec2 stratified_point(int k, int n, Vec2 u);
 
-// Exercise 14.2: a uniform u in [0, 1) turned into an offset in (-1, 1) from the pixel centre,
-// distributed with the tent's density 1 - |x| (by inverting its distribution function).
-// Monotone in u, so stratified u stay stratified.
+// Exercise 14.2: a uniform u in [0, 1) turned into an offset in [-1, 1) from the pixel centre
+// (u = 0 gives -1, u = 1/2 the centre), distributed with the tent's density 1 - |x| (by
+// inverting its distribution function). Monotone in u, so stratified u stay stratified.
 Real tent_offset(Real u);
 
 }  // namespace rt

@@ -38,13 +38,17 @@ Ray perspective_ray(const Vec3& eye, const Basis& uvw, Real d, const Vec2& uv);
 enum class LensShape : std::uint8_t { square, disk };
 
 // Exercise 16.1: a point of the lens from u in [0, 1)^2, in lens coordinates centred on the
-// lens's middle: [-1, 1]^2 for the square, the unit disk for the disk. Strata of u must stay
-// apart: neighbouring u give neighbouring points.
+// lens's middle. The square: 2u - 1, in [-1, 1)^2. The disk: any map onto the unit disk that
+// is uniform (equal areas of u to equal areas of the disk) and keeps strata of u compact
+// (each stratum of a 4 x 4 pattern lands in a patch less than 1 across; the polar map's
+// outer arcs are 1.41), in any orientation: the tests check these properties, not where a
+// particular u lands. Shirley and Chiu's concentric map (book §16.2) is one.
 Vec2 lens_point(const Vec2& u, LensShape shape);
 
 // Exercise 16.2: the thin-lens version of perspective_ray: the ray from the point `lens`
 // (lens coordinates, as lens_point makes them) of a lens of width `aperture` centred on the
-// eye, in the plane of u and v, through the point that the pinhole ray through window point
+// eye, in the plane of u and v (eye + (aperture / 2)(lens.x u + lens.y v): lens.x along u,
+// lens.y along v), through the point that the pinhole ray through window point
 // uv meets at distance `focus` in front of the eye (the plane -w . (p - eye) = focus). Every
 // such ray through one window point meets the pinhole ray there: that plane is in focus.
 // Its direction is scaled as the pinhole ray's is: it reaches that point at t = focus / d,

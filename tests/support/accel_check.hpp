@@ -11,6 +11,7 @@
 #include <memory>
 #include <random>
 #include <span>
+#include <string>
 #include <vector>
 
 namespace rt::test {
@@ -95,6 +96,39 @@ inline void edge_rays(const MeshData& data, const Vec3& centre, RaySet& all, Ray
         }
 }
 
+// A structure's name and the exercises it is built and searched with (accel/accel.hpp): a
+// disagreement in a later chapter's test may come from an earlier chapter's exercise.
+inline std::string structure_label(AccelKind kind) {
+    std::string uses;
+    switch (kind) {
+        case AccelKind::none:
+            uses = "brute force, library code: the reference";
+            break;
+        case AccelKind::bvh_sort:
+            uses = "exercises 10.1 hit_box, 10.2 build_sorted, 10.4 Bvh::hit_node";
+            break;
+        case AccelKind::bvh_midpoint:
+            uses = "exercises 10.1 hit_box, 10.3 build_midpoint, 10.4 Bvh::hit_node";
+            break;
+        case AccelKind::bvh_sah:
+            uses = "exercises 10.1 hit_box, 10.4 Bvh::hit_node; the SAH build is library code";
+            break;
+        case AccelKind::grid:
+            uses = "exercises 11.1 Grid::start, 11.2 Grid::walk";
+            break;
+        case AccelKind::bsp_midpoint:
+            uses = "exercises 12.1 Bsp::hit_node, 12.2 build_midpoint";
+            break;
+        case AccelKind::bsp:
+            uses = "exercise 12.1 Bsp::hit_node; the SAH build is library code";
+            break;
+        case AccelKind::fast:
+            uses = "library code only";
+            break;
+    }
+    return std::string(accel_name(kind)) + " (" + uses + ")";
+}
+
 // Each structure's closest hit and any-hit answer against brute force, for these rays.
 // Returns the number of disagreements (the first is CHECKed in full).
 inline int disagreements(const SurfaceList& list, const std::vector<Ray>& rays, const std::vector<Interval>& intervals,
@@ -110,11 +144,17 @@ inline int disagreements(const SurfaceList& list, const std::vector<Ray>& rays, 
     int failures = 0;
     for (AccelKind kind : structures) {
         const Accel accel(list, kind);
-        CAPTURE(accel_name(kind));
+        const std::string structure = structure_label(kind);
+        CAPTURE(structure);
         for (std::size_t k = 0; k < rays.size(); ++k) {
             HitRecord got;
             const bool got_hit = accel.hit(list, rays[k], intervals[k], got);
+            // The inputs that caused a disagreement, in full: enough to repeat the query.
+            const Ray& ray = rays[k];
+            const Interval& interval = intervals[k];
             CAPTURE(k);
+            CAPTURE(ray);
+            CAPTURE(interval);
             RT_CHECK_FIRST(failures, got_hit == bool(want_hit[k]));
             if (got_hit && want_hit[k]) {
                 RT_CHECK_FIRST(failures, got.t == want[k].t);
@@ -143,7 +183,8 @@ inline int image_differences(Scene scene, std::span<const AccelKind> structures,
         int here = 0;
         for (int y = 0; y < o.height; ++y)
             for (int x = 0; x < o.width; ++x) here += got.at(x, y) != want.at(x, y);
-        CAPTURE(accel_name(kind));
+        const std::string structure = structure_label(kind);
+        CAPTURE(structure);
         CHECK(here == 0);
         differ += here;
     }
