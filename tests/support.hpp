@@ -9,6 +9,7 @@
 
 #include <cmath>
 #include <limits>
+#include <ostream>
 #include <string>
 
 // What a failed check prints is what the student debugs with, so it prints values in full.
