@@ -23,13 +23,16 @@ To keep it quick, variants share rounds: one grade per round, on the round's cha
 A wrong body in chapter c also reaches the programs of later chapters (they link the
 student's exercises up to theirs), so a round holds at most one fail variant, and only pass
 variants of earlier chapters beside it. Fail variants are graded on their unit tests only
-(tools/grade --units) unless they say "// images".
+(tools/grade --units) unless they say "// images". Rounds run in as many lanes as
+there are cores, each on a copy of its own.
 """
 import os
 import re
 import shutil
 import subprocess
 import sys
+import time
+from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
@@ -147,33 +150,51 @@ def main():
         variants = [v for v in variants if v.name in wanted]
     chapters = re.search(r"^set\(RTLAB_CHAPTERS (.*)\)$", (root / "CMakeLists.txt").read_text(), re.M)[1].split()
 
-    shutil.rmtree(work, ignore_errors=True)
-    ignore = shutil.ignore_patterns(".git", "build", "out")
-    shutil.copytree(root, work, ignore=ignore, symlinks=True)
-    # Every exercise answered as the reference does, as a student who finished them all: then
-    # one configuration serves every round (no --solved to change), and a round recompiles
-    # only the files of its variants.
-    for c in chapters:
-        exercise_file(root, work, c, None)
-    pristine = {p.name: p.read_text() for p in (work / "exercises").glob("*.cpp")}
-    build = work / "build" / "exercises"
-    env = dict(os.environ)
-
     # Each chapter's denominator, counted in its source: what the grade must say, whatever runs.
     totals = {c: len(re.findall(r"^\s*TEST_CASE\(", (root / "tests" / f"test_ch{c}.cpp").read_text(), re.M))
               for c in chapters}
 
-    for group in rounds(variants):
+    # A round mostly waits on one chapter's test program, one core: as many lanes as cores,
+    # each a copy of the lab of its own, take the rounds in turn.
+    shutil.rmtree(work, ignore_errors=True)
+    lanes = max(1, min(os.cpu_count() or 1, 4))
+    copies = []
+    for k in range(lanes):
+        copy = work / f"lane{k}"
+        shutil.copytree(root, copy, ignore=shutil.ignore_patterns(".git", "build", "out"), symlinks=True)
+        # Every exercise answered as the reference does, as a student who finished them all:
+        # one configuration serves every round (no --solved to change), and a round
+        # recompiles only the files of its variants.
+        for c in chapters:
+            exercise_file(root, copy, c, None)
+        copies.append((copy, {p.name: p.read_text() for p in (copy / "exercises").glob("*.cpp")}))
+
+    def grade(lane, group):
+        copy, pristine = copies[lane]
         for name, text in pristine.items():
-            (work / "exercises" / name).write_text(text)
+            (copy / "exercises" / name).write_text(text)
         for v in group:
-            exercise_file(root, work, v.chapter, v)
+            exercise_file(root, copy, v.chapter, v)
         mine = sorted({v.chapter for v in group})
         units = all(not v.images for v in group)
-        command = ["tools/grade", *mine, "--build", str(build), "--solved", ""] + (["--units"] if units else [])
-        run = subprocess.run(command, cwd=work, env=env, capture_output=True, text=True)
-        out = run.stdout + run.stderr
-        print(f"-- round {', '.join(v.name for v in group)}: grade {' '.join(mine)}{' --units' if units else ''}")
+        command = ["tools/grade", *mine, "--build", "build/exercises", "--solved", ""] + (["--units"] if units else [])
+        start = time.monotonic()
+        run = subprocess.run(command, cwd=copy, capture_output=True, text=True)
+        return mine, units, run.stdout + run.stderr, time.monotonic() - start
+
+    groups = rounds(variants)
+    with ThreadPoolExecutor(lanes) as pool:
+        # Lane k takes rounds k, k + lanes, ...: each lane's rounds run one after another.
+        lane_jobs = [pool.submit(lambda k=k: [grade(k, g) for g in groups[k::lanes]]) for k in range(lanes)]
+        results = {}
+        for k, job in enumerate(lane_jobs):
+            for g, r in zip(groups[k::lanes], job.result()):
+                results[id(g)] = r
+
+    for group in groups:
+        mine, units, out, seconds = results[id(group)]
+        print(f"-- round {', '.join(v.name for v in group)}: grade {' '.join(mine)}{' --units' if units else ''}"
+              f" ({seconds:.0f} s)")
         for v in group:
             s = score(out, v.chapter)
             if s is None:
