@@ -64,7 +64,7 @@ test_renders() {
 echo "rtlab-stat test ${tolerance[*]} ${extra[*]}; renders ${render_args[*]}; $groups groups of 8 from seed $first"
 printf '%-16s %10s %12s %10s %16s\n' scene failing "smallest p" "family p" "family p < 0.1"
 for ch in "${noisy[@]}"; do
-    for mean in "$golden"/ch$ch/*.mean.pfm; do
+    for mean in "$golden/ch$ch"/*.mean.pfm; do
         scene=$(basename "$mean" .mean.pfm)
         : >"$work/groups.txt"
         for ((g = 0; g < groups; g++)); do
