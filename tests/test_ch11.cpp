@@ -8,6 +8,7 @@
 #include "support.hpp"
 #include "support/accel_check.hpp"
 #include "support/source_dir.hpp"
+#include "support/wall_rays.hpp"
 
 #include <cmath>
 
@@ -178,61 +179,14 @@ TEST_CASE("11.2 the walk stops in the cell of the first hit: one cell more than 
     CHECK(failures == 0);
 }
 
-namespace {
-
-// A closed cube mesh that is its own grid's box: each of its faces is a wall lying in a face
-// of the grid. Rays that start a hair from a wall, inside the cube or outside, and meet it
-// a little further on at a grazing angle, in the cell where the walk ends or where it
-// starts. `outside` picks which.
-struct Walls {
-    Vec3 centre{Real(0.37), Real(-0.21), Real(0.13)};
-    Real size = Real(2.3);
-    SurfaceList list;
-    Walls() { list.add(Mesh(subdivided_cube(centre, size, 4))); }
-
-    // How many of 1,200 such rays the grid gets wrong against brute force (lost, or another hit).
-    int wrong(bool outside) const {
-        const Grid grid(list, 2);
-        const Box b = grid.bounding_box();
-        const Accel brute(list, AccelKind::none);
-        rt::test::Rng rng;
-        int wrong = 0;
-        for (int k = 0; k < 1200; ++k) {
-            const int axis = k % 3;
-            const bool high = (k / 3) % 2;
-            const Real face = high ? b.max[axis] : b.min[axis], inward = high ? -1 : 1;
-            Vec3 from = centre + rng.vec(-0.45, 0.45) * size, along = rng.vec(-1, 1);
-            along[axis] = 0;
-            Vec3 at = from + along * (std::pow(Real(10), rng(-3, -1.5)) * size);  // on the wall
-            at[axis] = face;
-            from[axis] = face + (outside ? -inward : inward) * std::pow(Real(10), rng(-6, -4)) * size;
-            const Ray ray{from, at - from};
-            HitRecord got, want;
-            REQUIRE(brute.hit(list, ray, Interval{}, want));
-            const bool hit = grid.hit(list, ray, Interval{}, got);
-            const bool bad = !hit || got.t != want.t || got.primitive != want.primitive;
-            if (bad && wrong == 0) {
-                CAPTURE(k);
-                CAPTURE(ray.origin);
-                CAPTURE(ray.direction);
-                CAPTURE(want.t);
-                CHECK(hit);
-                if (hit) CHECK(got.t == want.t);
-            }
-            wrong += bad;
-        }
-        return wrong;
-    }
-};
-
-}  // namespace
-
 TEST_CASE(
     "11.2 a wall on the grid's far face, met from close by at a grazing angle: each cell searched to its padded exit") {
     // The wall lies in the plane where the walk's last cell ends. Rounding puts the hit a
     // hair past that plane about half the time, and nothing lies beyond it to find the hit
     // in: the search of the last cell must reach past its exit by the pad too (§11.3).
-    CHECK(Walls{}.wrong(false) == 0);
+    const rt::test::Walls walls;
+    const rt::test::RaySet set = walls.rays(false);
+    CHECK(rt::test::disagreements(walls.list, set.rays, set.intervals, kGrid) == 0);
 }
 
 TEST_CASE(
@@ -242,7 +196,9 @@ TEST_CASE(
     // point where the clipped interval starts about half the time: searched from the ray's
     // own start, the first cell finds it; from the clipped start, the walk goes on to the
     // cube's far side.
-    CHECK(Walls{}.wrong(true) == 0);
+    const rt::test::Walls walls;
+    const rt::test::RaySet set = walls.rays(true);
+    CHECK(rt::test::disagreements(walls.list, set.rays, set.intervals, kGrid) == 0);
 }
 
 TEST_CASE("11.2 the grid returns brute force's hit on 10^5 random rays (t, surface and triangle)") {
