@@ -1,6 +1,8 @@
 // Chapter 11: the uniform grid (course §9.9.3). Where a walk starts, the cells it visits
-// (as many as the planes the ray crosses, plus one), the course's Figure 9.23 trap, and the
-// grid against brute force on random rays and on rays through a closed mesh's shared edges.
+// (as many as the planes the ray crosses, plus one, up to the cell of its hit), the course's
+// Figure 9.23 trap, walls in the grid's own faces met at a grazing angle (the pad, and the
+// ray's own start), and the grid against brute force on random rays and on rays through a
+// closed mesh's shared edges. The 11.1 tests run no other exercise; every walk runs 11.1.
 #include "accel/accel.hpp"
 #include "io/scene_file.hpp"
 #include "render/integrators.hpp"

@@ -1,8 +1,11 @@
 // Chapter 12: the BSP tree (course §9.9.4). The four cases of the course's traversal, each
-// seen by which leaves a ray visits; the course's pseudo-code's -0 trap; the cyclic midpoint
-// build and the primitives it lists on both sides of a plane; the surface-area heuristic
-// cutting off empty space; and both builds against brute force on random rays, on rays
-// through a closed mesh's shared edges, far from the origin, and on the chapter's scenes.
+// seen by which leaves a ray visits, and counted against the cases written out here; the
+// course's pseudo-code's -0 trap, and -0 with the slack; the cyclic midpoint build, node by
+// node, the primitives it lists on both sides of a plane, and its depth limit; the
+// surface-area heuristic cutting off empty space; and both builds against brute force on
+// random rays, on rays through a closed mesh's shared edges, far from the origin, at walls
+// in the tree's box's faces, and on the chapter's scenes. The 12.2 tests of the tree's shape
+// run no 12.1; the tests on the library's SAH tree run no 12.2.
 #include "accel/accel.hpp"
 #include "io/scene_file.hpp"
 #include "render/integrators.hpp"

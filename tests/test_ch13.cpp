@@ -1,5 +1,6 @@
 // Chapter 13: constructive solid geometry (course §9.10). The interval algebra on hand-made
-// lists; each operation against point membership (inside tests of the operands that do not
+// lists (13.1), touching spans of one list among them; a closed mesh's crossings grouped
+// into spans (13.2); each operation against point membership (inside tests of the operands that do not
 // use the span code) along random rays; a closed mesh's crossings at shared edges; the lens
 // against the thick-lens formula; the thin-span tolerance with a test that fails without it;
 // shadows through a die and a block with a hole; operands that are not solids refused; and
