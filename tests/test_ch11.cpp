@@ -21,6 +21,11 @@ namespace {
 const std::string kScenes = rt::test::source_dir() + "/chapters/ch11_grid/scenes/";
 constexpr AccelKind kGrid[] = {AccelKind::grid};
 
+// Cells, steps and resolutions as vectors, which a failed check prints by value.
+glm::ivec3 ints(const std::array<int, 3>& a) {
+    return glm::ivec3(a[0], a[1], a[2]);
+}
+
 // Spheres at the corners of the box [-4, 4]^3, small enough that rays through the middle
 // miss them all: a grid to walk through without stopping.
 SurfaceList corners() {
@@ -36,20 +41,20 @@ TEST_SUITE("ch11") {
 TEST_CASE("11.1 start: the first cell, the steps, and the first plane along each axis") {
     const SurfaceList list = corners();
     const Grid grid(list, 64);  // 512 cells: 8 a side
-    REQUIRE(grid.resolution() == std::array<int, 3>{8, 8, 8});
+    REQUIRE(ints(grid.resolution()) == glm::ivec3(8, 8, 8));
     CHECK(grid.cell_size().x == doctest::Approx(1));
     // From outside, along +x at y = 0.5, z = -2.5: enters cell (0, 4, 1) at x = -4.
     GridWalk w;
     REQUIRE(grid.start(Ray{Vec3(-10, 0.5, -2.5), Vec3(2, 0, 0)}, Interval{}, w));
-    CHECK(w.cell == std::array<int, 3>{0, 4, 1});
-    CHECK(w.step == std::array<int, 3>{1, 0, 0});
+    CHECK(ints(w.cell) == glm::ivec3(0, 4, 1));
+    CHECK(ints(w.step) == glm::ivec3(1, 0, 0));
     CHECK(w.t_max.x == doctest::Approx(3.5));  // the plane x = -3, reached at t = 7 / 2
     CHECK(w.t_max.y == kInfinity);
     CHECK(w.t_max.z == kInfinity);
     // From inside, towards -x, -y, +z, with a -0: the cell holding the origin.
     REQUIRE(grid.start(Ray{Vec3(1.25, -0.75, 2.5), Vec3(-1, -0.5, -Real(0))}, Interval{}, w));
-    CHECK(w.cell == std::array<int, 3>{5, 3, 6});
-    CHECK(w.step == std::array<int, 3>{-1, -1, 0});
+    CHECK(ints(w.cell) == glm::ivec3(5, 3, 6));
+    CHECK(ints(w.step) == glm::ivec3(-1, -1, 0));
     CHECK(w.t_max.x == doctest::Approx(0.25));  // back to x = 1
     CHECK(w.t_max.y == doctest::Approx(0.5));   // down to y = -1: 0.25 / 0.5
     CHECK(w.t_max.z == kInfinity);
@@ -61,20 +66,20 @@ TEST_CASE("11.1 start: the first cell, the steps, and the first plane along each
 TEST_CASE("11.1 start: through the far face, across a corner, from a plane, and where the walk ends") {
     const SurfaceList list = corners();
     const Grid grid(list, 64);
-    REQUIRE(grid.resolution() == std::array<int, 3>{8, 8, 8});
+    REQUIRE(ints(grid.resolution()) == glm::ivec3(8, 8, 8));
     GridWalk w;
     // Entering through the face x = 4: the point on it gives index 8, one past the last
     // cell; the first cell is the last one, clamped.
     REQUIRE(grid.start(Ray{Vec3(10, 0.5, -2.5), Vec3(-2, 0, 0)}, Interval{}, w));
-    CHECK(w.cell == std::array<int, 3>{7, 4, 1});
-    CHECK(w.step == std::array<int, 3>{-1, 0, 0});
+    CHECK(ints(w.cell) == glm::ivec3(7, 4, 1));
+    CHECK(ints(w.step) == glm::ivec3(-1, 0, 0));
     CHECK(w.t_max.x == doctest::Approx(3.5));  // back to x = 3
     CHECK(w.t_end == doctest::Approx(7));      // out through x = -4
     // Across a corner from outside: the walk starts where the ray enters (at t = 6, through
     // x = -4), not in the cell nearest the origin, and ends where it leaves (t = 13, y = 4).
     REQUIRE(grid.start(Ray{Vec3(-10, -9, 0.5), Vec3(1, 1, 0)}, Interval{}, w));
-    CHECK(w.cell == std::array<int, 3>{0, 1, 4});
-    CHECK(w.step == std::array<int, 3>{1, 1, 0});
+    CHECK(ints(w.cell) == glm::ivec3(0, 1, 4));
+    CHECK(ints(w.step) == glm::ivec3(1, 1, 0));
     CHECK(w.t_max.x == doctest::Approx(7));
     CHECK(w.t_max.y == doctest::Approx(7));
     CHECK(w.t_max.z == kInfinity);
@@ -88,13 +93,13 @@ TEST_CASE("11.1 start: through the far face, across a corner, from a plane, and 
     for (Real zero : {-Real(0), Real(0)}) {
         REQUIRE(grid.start(Ray{Vec3(1.25, -0.75, 2), Vec3(-1, -0.5, zero)}, Interval{}, w));
         CAPTURE(std::signbit(zero));
-        CHECK(w.cell == std::array<int, 3>{5, 3, 6});
+        CHECK(ints(w.cell) == glm::ivec3(5, 3, 6));
         CHECK(w.step[2] == 0);
         CHECK(w.t_max.z == kInfinity);
     }
     // And from inside a cell along -y with d_x = -0: x's planes are never reached either.
     REQUIRE(grid.start(Ray{Vec3(1.25, -0.75, 2.5), Vec3(-Real(0), -1, 0)}, Interval{}, w));
-    CHECK(w.step == std::array<int, 3>{0, -1, 0});
+    CHECK(ints(w.step) == glm::ivec3(0, -1, 0));
     CHECK(w.t_max.x == kInfinity);
     CHECK(w.t_max.y == doctest::Approx(0.25));
 }
@@ -156,7 +161,7 @@ TEST_CASE("11.2 the walk stops in the cell of the first hit: one cell more than 
     SurfaceList list = corners();
     list.add(Polygon({Vec3(0.5, -4, -4), Vec3(0.5, 4, -4), Vec3(0.5, 4, 4), Vec3(0.5, -4, 4)}));
     const Grid grid(list, 64);
-    REQUIRE(grid.resolution() == std::array<int, 3>{8, 8, 8});
+    REQUIRE(ints(grid.resolution()) == glm::ivec3(8, 8, 8));
     rt::test::Rng rng;
     int failures = 0, counted = 0;
     for (int k = 0; k < 1000; ++k) {
