@@ -339,10 +339,11 @@ TEST_CASE("12.1 erratum: the course's pseudo-code, given d_x = -0, searches the 
 
 TEST_CASE("12.1 a ray along a cutting plane (d = -0 or +0) searches its own side only, as one moving away does") {
     // Written with the slack and the clamps, "moving away" tested as d < 0 below the plane
-    // gets -0 wrong without a wrong hit: t = -infinity and s = infinity make NaN, which
-    // std::min and std::max turn into the whole part, and the far side is searched over it
-    // for nothing. Only the count shows it: a ray along the plane must visit what a ray that
-    // moves away from it by a hair visits. The rays pass above the triangle and hit nothing.
+    // gets -0 wrong without a wrong hit: t = -infinity and s = infinity make t + s NaN and
+    // t - s -infinity, which std::min and std::max turn into the whole part, and the far
+    // side is searched over it for nothing. Only the count shows it: a ray along the plane
+    // must visit what a ray that moves away from it by a hair visits. The rays pass above
+    // the triangle and hit nothing.
     const SurfaceList list = two_balls();
     for (BspBuild how : {BspBuild::midpoint, BspBuild::sah}) {
         const Bsp bsp(list, how, 1);

@@ -1,7 +1,7 @@
 // fairness 12.1 fail: "moving away" tested as d < 0 below the plane and d > 0 above, with the slack and the clamps
 // For d = -0 below the plane (or +0 above), t = -infinity and the slack is infinity: t + s
-// and t - s are NaN, std::min and std::max hand back the whole part, and the far side is
-// searched over it. No wrong hit, but a side the ray never reaches is opened for nothing
+// is NaN and t - s is -infinity, std::min and std::max hand back the whole part, and the
+// far side is searched over it. No wrong hit, but a side the ray never reaches is opened for nothing
 // (book §12.2): the visit counts show it.
 // @body
     const BspNode& n = node(ref);
