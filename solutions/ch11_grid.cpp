@@ -39,9 +39,10 @@ bool Grid::walk(const SurfaceList& surfaces, const Ray& ray, Interval interval, 
     do {
         // Only hits before the ray leaves this cell count. A primitive that reaches into
         // later cells may be hit there, behind a closer one in a cell not walked yet (course
-        // Figure 9.23): that hit is found again, in its own cell.
-        const Real exit = std::min(cell_exit(ray, w), w.t_end);
-        if (hit_cell(surfaces, w, ray, Interval{interval.min, std::min(best.t, exit)}, best)) return true;
+        // Figure 9.23): that hit is found again, in its own cell. From the ray's own start,
+        // and to the padded exit even in the last cell: a wall in the grid's near or far face
+        // is hit a rounding error outside the part of the ray inside the box.
+        if (hit_cell(surfaces, w, ray, Interval{interval.min, std::min(best.t, cell_exit(ray, w))}, best)) return true;
     } while (next(ray, w));
     return false;
     // @end

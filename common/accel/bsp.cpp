@@ -193,12 +193,16 @@ bool Bsp::hit_leaf(const SurfaceList& surfaces, const BspNode& leaf, const Ray& 
 
 bool Bsp::hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
     if (root_ == kNone) return false;
-    // The far end is clipped to the tree's box. The near end is not: the four cases hold
-    // for the whole line, and a hit a rounding error before the box's face must count.
+    // The far end is clipped to the tree's box, padded: the box is made of the primitives'
+    // boxes, so a wall can lie in its face, and a ray that meets it from close by at a
+    // grazing angle has its hit a rounding error past the face about half the time. The near
+    // end is not clipped: the four cases hold for the whole line, and a hit a rounding error
+    // before the box's face must count too.
     Interval inside = interval;
     if (!clip_to_box(bounds_, ray, inside)) return false;
+    const Real far = std::min(interval.max, inside.max + pad_ / glm::length(ray.direction));
     HitRecord best = no_hit_before(interval.max);
-    if (!hit_node(surfaces, root_, ray, Interval{interval.min, inside.max}, best)) return false;
+    if (!hit_node(surfaces, root_, ray, Interval{interval.min, far}, best)) return false;
     rec = best;
     return true;
 }

@@ -69,9 +69,13 @@ inline Box above_plane(Box cell, int axis, Real split) {
 }
 
 // Exercise 12.2: the course's build. Cut the cell at its middle along axis depth % 3 and
-// build each half from the items sorted to it, one level deeper. A list of at most
-// leaf_size() items, or one at max_depth(), is a leaf. A cut that sends more than half the
-// items to both sides is not made: the next axis is tried, and after all three, a leaf.
+// build each half from the items sorted to it (sort()), one level deeper, in its half of
+// the cell: below the plane on the left, above on the right. A list of at most leaf_size()
+// items, or one at depth max_depth(), is a leaf. A cut that sends more than half the items
+// to both sides (more than 1.5 n listed from n) is not made: the next axis is tried, and
+// after all three, a leaf. The tests demand the tree itself: each node's axis and plane,
+// which primitives lie under each side, the leaves and the depth. The numbering of the
+// nodes is free.
 BspRef build_midpoint(BspBuilder& builder, std::span<const std::uint32_t> items, const Box& cell, int depth);
 
 // The surface-area-heuristic build: the plane of least expected cost (a node visit plus the
@@ -93,7 +97,15 @@ public:
 
     // Exercise 12.1: the course's four cases. Searches the subtree `ref` for the closest hit
     // in the interval (the part of the ray the search has reached this node with), keeping
-    // it in best; true if it found one.
+    // it in best; true if it found one. The near side is the side of the plane where the
+    // part starts; a part that starts exactly on the plane may take either side (both parts
+    // below reach the slack past the plane, so the hits are the same). A ray that does not
+    // move towards the plane (it moves away, or runs along it: d = +0 or -0), or reaches it
+    // only after the part ends (t - slack > interval.max), searches the near side alone,
+    // over the whole part. Otherwise the near side over [min, min(max, t + slack)] and, only
+    // if that found nothing, the far side over [max(min, t - slack), max]. The tests demand
+    // brute force's hit, and the nodes and primitives these cases visit (traversal_tally):
+    // a search that finds the right hit with more work fails them.
     bool hit_node(const SurfaceList& surfaces, BspRef ref, const Ray& ray, Interval interval, HitRecord& best) const;
 
     // Tests a leaf's primitives over the interval, keeping a closer hit in best.

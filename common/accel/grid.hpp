@@ -29,11 +29,20 @@ public:
     Box bounding_box() const { return bounds_; }
 
     // Exercise 11.1: where a ray's walk starts. Clips the interval to the grid (clip());
-    // false if the ray misses it. Otherwise the cell holding the point where the ray enters,
-    // the steps, each axis's next plane (boundary()), and the end of the walk.
+    // false if the ray misses it. Otherwise the cell holding the point where the clipped
+    // interval starts (its index clamped to the grid: that point may lie on a far face, or a
+    // rounding error outside), the steps (0 for a component of +0 or -0), each axis's next
+    // plane in the direction of travel (boundary(); infinity for a step of 0), and t_end,
+    // the clipped interval's end. The tests demand every one of these values, and only them.
     bool start(const Ray& ray, Interval interval, GridWalk& walk) const;
-    // Exercise 11.2: the closest hit, walking the cells in the order the ray meets them and
-    // accepting, in each cell, only hits before the ray leaves that cell (cell_exit()).
+    // Exercise 11.2: the closest hit, walking the cells in the order the ray meets them
+    // (start(), next()) and stopping in the first cell that yields one. Each cell is searched
+    // (hit_cell()) from the interval's own start, not the clipped one, up to its padded exit
+    // (cell_exit()), in the last cell too: a wall lying in the grid's near or far face can be
+    // hit a rounding error outside the clipped interval. best.t starts at the interval's end,
+    // so no other cap is needed. The tests demand brute force's hit (t, surface, triangle)
+    // and the cells visited (traversal_tally.nodes, counted by hit_cell()): each from the
+    // first to the one that yields the hit, once.
     bool walk(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& best) const;
 
     // Steps the walk into the next cell the ray meets: along the axis whose plane comes
@@ -41,8 +50,12 @@ public:
     bool next(const Ray& ray, GridWalk& walk) const;
     // Shrinks the interval to where the ray is inside the grid's box; false if it is empty.
     bool clip(const Ray& ray, Interval& interval) const;
-    // The coordinate of plane k (0..resolution) along an axis: min + k * cell size.
-    Real boundary(int axis, int k) const { return bounds_.min[axis] + Real(k) * cell_size_[axis]; }
+    // The coordinate of plane k (0..resolution) along an axis: min + k * cell size, and the
+    // box's own face exactly for the last (min + n * (size / n) may round to a hair inside it,
+    // and a ray that grazes a wall lying in that face would leave the grid before meeting it).
+    Real boundary(int axis, int k) const {
+        return k == n_[axis] ? bounds_.max[axis] : bounds_.min[axis] + Real(k) * cell_size_[axis];
+    }
     // Where the ray leaves the walk's current cell, padded a little (book §11.3): a hit
     // there belongs to this cell, since every primitive near a plane sits on both sides.
     Real cell_exit(const Ray& ray, const GridWalk& walk) const;

@@ -28,13 +28,25 @@ using SpanList = std::vector<Span>;
 enum class CsgOp { union_of, intersection, difference };
 const char* csg_op_name(CsgOp op);  // "union", "intersection", "difference"
 
-// Exercise 13.1: the spans inside `a op b`, from the spans inside a and inside b. Each end
-// of a result span is an end of a span of a or of b (a whole record, copied).
+// Exercise 13.1: the spans inside `a op b`, from the spans inside a and inside b. Walk the
+// ends of both lists in order of t, entries before exits at equal t (across both lists,
+// and within one: two spans of one list may touch), counting how deep the ray is inside
+// each operand; a result span starts at the end where the operation becomes true and ends
+// at the end where it becomes false, each a whole record, copied. Free, and accepted by the
+// tests either way: which of two ends of one kind at one t comes first (so which record a
+// result span takes there), and whether a span of no thickness is kept for drop_thin or
+// dropped here.
 SpanList combine(CsgOp op, const SpanList& a, const SpanList& b);
 
 // Exercise 13.2: the spans inside a closed mesh, from every crossing of its surface along the
-// line (sorted by t) and the ray's direction. Crossings whose t differ by at most `same_t`
-// are one crossing: a ray through an edge or a vertex meets every triangle there.
+// line (sorted by t, then triangle) and the ray's direction. Crossings whose t differ by at
+// most `same_t` are one crossing: a ray through an edge or a vertex meets every triangle
+// there. A group takes each next crossing within same_t of its first one, or of the one
+// before (either: the tests accept both), and counts by the sign of its sum, +1 for each
+// crossing that enters (direction . normal < 0), -1 for each that leaves. The ray is inside
+// or outside, never deeper: a group that enters while inside, or leaves while outside,
+// changes nothing. A span runs from the first entering crossing of the group that opens it
+// to the first leaving crossing of the group that closes it.
 SpanList mesh_spans(const std::vector<HitRecord>& crossings, const Vec3& direction, Real same_t);
 
 // Drops the spans, and then closes the gaps between spans, that are thinner than `thin`: a

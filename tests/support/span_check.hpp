@@ -3,8 +3,12 @@
 // written as (in, out) pairs of t, and read back as such.
 #include "geometry/shape.hpp"
 
+#include <doctest/doctest.h>
+
 #include <initializer_list>
+#include <limits>
 #include <memory>
+#include <sstream>
 #include <utility>
 #include <vector>
 
@@ -40,3 +44,21 @@ inline std::shared_ptr<const Shape> share(Shape s) {
 }
 
 }  // namespace rt::test
+
+// A failed CHECK(ts(x) == Pairs{...}) prints both lists of spans, "{[0, 2], [2, 2]}", each t
+// with every digit it has (max_digits10): two ends that differ in the last place must not
+// both print as 2.
+namespace doctest {
+template <>
+struct StringMaker<rt::test::Pairs> {
+    static String convert(const rt::test::Pairs& pairs) {
+        std::ostringstream out;
+        out.precision(std::numeric_limits<rt::Real>::max_digits10);
+        out << "{";
+        for (std::size_t k = 0; k < pairs.size(); ++k)
+            out << (k ? ", [" : "[") << pairs[k].first << ", " << pairs[k].second << "]";
+        out << "}";
+        return out.str().c_str();
+    }
+};
+}  // namespace doctest

@@ -1,0 +1,17 @@
+// fairness 12.1 fail: the near side judged from the ray's origin, not from where the part starts
+// Below a plane the ray crossed before this part began, the origin is on the side the
+// part has left: that side is searched over an empty part, for nothing.
+// @body
+    const BspNode& n = node(ref);
+    if (n.leaf()) return hit_leaf(surfaces, n, ray, interval, best);
+    const Real d = ray.direction[n.axis];
+    const Real p = ray.origin[n.axis];
+    const bool starts_below = p < n.split || (p == n.split && d < 0);
+    const BspRef near = starts_below ? n.left : n.right;
+    const BspRef far = starts_below ? n.right : n.left;
+    if (starts_below ? !(d > 0) : !(d < 0)) return hit_node(surfaces, near, ray, interval, best);
+    const Real t = (n.split - ray.origin[n.axis]) / d;
+    const Real s = slack(ray, n.axis);
+    if (t - s > interval.max) return hit_node(surfaces, near, ray, interval, best);
+    if (hit_node(surfaces, near, ray, Interval{interval.min, std::min(interval.max, t + s)}, best)) return true;
+    return hit_node(surfaces, far, ray, Interval{std::max(interval.min, t - s), interval.max}, best);

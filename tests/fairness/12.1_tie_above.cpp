@@ -1,0 +1,16 @@
+// fairness 12.1 pass: a part that starts exactly on the plane counts as above it, whichever way it moves
+// As 12.1_tie_below, the other way: the contract leaves the side free.
+// @body
+    const BspNode& n = node(ref);
+    if (n.leaf()) return hit_leaf(surfaces, n, ray, interval, best);
+    const Real d = ray.direction[n.axis];
+    const Real p = ray.origin[n.axis] + interval.min * d;
+    const bool starts_below = p < n.split;
+    const BspRef near = starts_below ? n.left : n.right;
+    const BspRef far = starts_below ? n.right : n.left;
+    if (starts_below ? !(d > 0) : !(d < 0)) return hit_node(surfaces, near, ray, interval, best);
+    const Real t = (n.split - ray.origin[n.axis]) / d;
+    const Real s = slack(ray, n.axis);
+    if (t - s > interval.max) return hit_node(surfaces, near, ray, interval, best);
+    if (hit_node(surfaces, near, ray, Interval{interval.min, std::min(interval.max, t + s)}, best)) return true;
+    return hit_node(surfaces, far, ray, Interval{std::max(interval.min, t - s), interval.max}, best);

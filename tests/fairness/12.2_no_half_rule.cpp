@@ -1,0 +1,14 @@
+// fairness 12.2 fail: every cut is made, however many items it copies
+// A pile that no plane separates is copied into 2^depth leaves (book §12.4).
+// @body
+    if (items.size() <= builder.leaf_size() || depth >= builder.max_depth()) return builder.add_leaf(items);
+    std::vector<std::uint32_t> below, above;
+    for (int k = 0; k < 3; ++k) {
+        const int axis = (depth + k) % 3;
+        const Real split = (cell.min[axis] + cell.max[axis]) / 2;
+        builder.sort(items, axis, split, below, above);
+        const BspRef left = build_midpoint(builder, below, below_plane(cell, axis, split), depth + 1);
+        const BspRef right = build_midpoint(builder, above, above_plane(cell, axis, split), depth + 1);
+        return builder.add_inner(axis, split, left, right);
+    }
+    return builder.add_leaf(items);

@@ -1,0 +1,16 @@
+// fairness 12.2 fail: each half built in the other half's cell
+// The items are sorted right, so every hit is still found, but each subtree's planes are
+// the middles of the wrong cells: a tree that cuts where nothing is (book §12.4).
+// @body
+    if (items.size() <= builder.leaf_size() || depth >= builder.max_depth()) return builder.add_leaf(items);
+    std::vector<std::uint32_t> below, above;
+    for (int k = 0; k < 3; ++k) {
+        const int axis = (depth + k) % 3;
+        const Real split = (cell.min[axis] + cell.max[axis]) / 2;
+        builder.sort(items, axis, split, below, above);
+        if (2 * (below.size() + above.size()) > 3 * items.size()) continue;
+        const BspRef left = build_midpoint(builder, below, above_plane(cell, axis, split), depth + 1);
+        const BspRef right = build_midpoint(builder, above, below_plane(cell, axis, split), depth + 1);
+        return builder.add_inner(axis, split, left, right);
+    }
+    return builder.add_leaf(items);

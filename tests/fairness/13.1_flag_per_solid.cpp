@@ -1,0 +1,40 @@
+// fairness 13.1 fail: one flag per solid, set on entering and cleared on leaving, instead of a count
+// Two spans of one list that touch, [0, 2] and [2, 4], give entry, entry, exit at t = 2
+// (entries first): the flag is set twice and cleared once, and says the ray has left a
+// solid it is still inside (book §13.2).
+// @body
+    // Walk the ends of all spans in order of t, counting how deep inside a and b the ray is;
+    // a result span starts where `op` becomes true and ends where it becomes false.
+    struct End {
+        const HitRecord* rec;
+        int side;  // 0: a, 1: b
+        bool in;
+    };
+    std::vector<End> ends;
+    ends.reserve(2 * (a.size() + b.size()));
+    for (int side = 0; side < 2; ++side)
+        for (const Span& s : side == 0 ? a : b) {
+            ends.push_back(End{&s.in, side, true});
+            ends.push_back(End{&s.out, side, false});
+        }
+    // At equal t, entering before leaving: two solids that touch make one span of a union,
+    // and a span of no thickness in an intersection (which drop_thin removes).
+    std::stable_sort(ends.begin(), ends.end(), [](const End& x, const End& y) {
+        if (x.rec->t != y.rec->t) return x.rec->t < y.rec->t;
+        return x.in && !y.in;
+    });
+    SpanList result;
+    bool depth[2] = {false, false};
+    bool inside = false;
+    const HitRecord* start = nullptr;
+    for (const End& e : ends) {
+        depth[e.side] = e.in;
+        const bool in_a = depth[0], in_b = depth[1];
+        const bool now = op == CsgOp::union_of       ? in_a || in_b
+                         : op == CsgOp::intersection ? in_a && in_b
+                                                     : in_a && !in_b;
+        if (now && !inside) start = e.rec;
+        if (!now && inside) result.push_back(Span{*start, *e.rec});
+        inside = now;
+    }
+    return result;
