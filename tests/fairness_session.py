@@ -194,54 +194,75 @@ def main():
         run = subprocess.run(command, cwd=copy, capture_output=True, text=True)
         return mine, units, run.stdout + run.stderr, time.monotonic() - start
 
+    def run_rounds(groups):
+        with ThreadPoolExecutor(lanes) as pool:
+            # Lane k takes rounds k, k + lanes, ...: each lane's rounds run one after another.
+            jobs = [pool.submit(lambda k=k: [grade(k, g) for g in groups[k::lanes]]) for k in range(lanes)]
+            results = {}
+            for k, job in enumerate(jobs):
+                for g, r in zip(groups[k::lanes], job.result()):
+                    results[id(g)] = r
+        return results
+
+    def judge(v, group, out):
+        """The checks of one variant, or None when another wrong body of its round hides
+        whether its own failure is named (then it is graded again, alone)."""
+        s = score(out, v.chapter)
+        if s is None:
+            return [(False, f"{v.name}: no scorecard row for ch{v.chapter}:\n{out}")], ""
+        unit_ok, unit_total, g_ok, g_total = s
+        full = unit_ok == unit_total and (g_ok is None or g_ok == g_total)
+        lines = [l for l in out.splitlines() if l.startswith(f"  ch{v.chapter} ")]
+        row = f"ch{v.chapter} {unit_ok} of {unit_total}" + ("" if g_ok is None else f", images {g_ok} of {g_total}")
+        row += f"; {lines[0].strip()[:160]}" if lines else ""
+        checks = [(unit_total == totals[v.chapter],
+                   f"{v.name}: the denominator is {unit_total}; tests/test_ch{v.chapter}.cpp has {totals[v.chapter]}")]
+        if v.verdict == "pass":
+            checks.append((full, f"{v.name} (a correct answer: {v.why}) did not get full marks: {row}\n" +
+                           "\n".join(lines)))
+            return checks, row
+        # A line names the variant when it is about its exercise (a test named for it, or one
+        # that ran it) and ran no other wrong body of this round.
+        others = {w.exercise for w in group if w.verdict == "fail" and w.chapter < v.chapter}
+
+        def names(line, excluded):
+            ran = re.search(r"\(ran your exercises ([0-9. ]+)\)", line)
+            ran = set(ran[1].split()) if ran else None
+            if ran is None and excluded:
+                return False
+            about = re.search(rf'unit test "{re.escape(v.exercise)} ', line) or (ran and v.exercise in ran)
+            return bool(about) and not (ran and ran & excluded)
+
+        if others and not any(names(l, others) for l in lines):
+            return None, row
+        checks.append((not full, f"{v.name} (wrong: {v.why}) got full marks: {row}"))
+        checks.append((any(names(l, others) for l in lines),
+                       f"{v.name}: no failure line names exercise {v.exercise}:\n" + "\n".join(lines)))
+        if v.expect:
+            checks.append((any(v.expect in l for l in lines),
+                           f"{v.name}: no failure line says '{v.expect}':\n" + "\n".join(lines)))
+        return checks, row
+
     groups = rounds(variants)
-    with ThreadPoolExecutor(lanes) as pool:
-        # Lane k takes rounds k, k + lanes, ...: each lane's rounds run one after another.
-        lane_jobs = [pool.submit(lambda k=k: [grade(k, g) for g in groups[k::lanes]]) for k in range(lanes)]
-        results = {}
-        for k, job in enumerate(lane_jobs):
-            for g, r in zip(groups[k::lanes], job.result()):
-                results[id(g)] = r
-
-    for group in groups:
-        mine, units, out, seconds = results[id(group)]
-        print(f"-- round {', '.join(v.name for v in group)}: grade {' '.join(mine)}{' --units' if units else ''}"
-              f" ({seconds:.0f} s)")
-        for v in group:
-            s = score(out, v.chapter)
-            if s is None:
-                check(False, f"{v.name}: no scorecard row for ch{v.chapter}:\n{out}")
-                continue
-            unit_ok, unit_total, g_ok, g_total = s
-            full = unit_ok == unit_total and (g_ok is None or g_ok == g_total)
-            lines = [l for l in out.splitlines() if l.startswith(f"  ch{v.chapter} ")]
-            row = f"ch{v.chapter} {unit_ok} of {unit_total}" + ("" if g_ok is None else f", images {g_ok} of {g_total}")
-            check(unit_total == totals[v.chapter],
-                  f"{v.name}: the denominator is {unit_total}; tests/test_ch{v.chapter}.cpp has {totals[v.chapter]}")
-            if v.verdict == "pass":
-                check(full, f"{v.name} (a correct answer: {v.why}) did not get full marks: {row}\n" + "\n".join(lines))
-            else:
-                check(not full, f"{v.name} (wrong: {v.why}) got full marks: {row}")
-                # A line names the variant when it is about its exercise (a test named for it,
-                # or one that ran it) and ran no other wrong body of this round.
-                ex = re.escape(v.exercise)
-                others = {w.exercise for w in group if w.verdict == "fail" and w.chapter < v.chapter}
-
-                def names(line):
-                    ran = re.search(r"\(ran your exercises ([0-9. ]+)\)", line)
-                    ran = set(ran[1].split()) if ran else None
-                    if ran is None and others:
-                        return False
-                    return (re.search(rf'unit test "{ex} ', line) or (ran and v.exercise in ran)) and not (
-                        ran and ran & others)
-
-                named = [l for l in lines if names(l)]
-                check(bool(named), f"{v.name}: no failure line names exercise {v.exercise}"
-                      f"{' alone (without ' + ' '.join(sorted(others)) + ')' if others else ''}:\n" + "\n".join(lines))
-                if v.expect:
-                    check(any(v.expect in l for l in lines),
-                          f"{v.name}: no failure line says '{v.expect}':\n" + "\n".join(lines))
-            print(f"   {v.name} ({v.verdict}): {row}" + (f"; {lines[0].strip()[:160]}" if lines else ""))
+    again = []
+    for attempt in (1, 2):
+        results = run_rounds(groups)
+        for group in groups:
+            mine, units, out, seconds = results[id(group)]
+            print(f"-- round {', '.join(v.name for v in group)}: grade {' '.join(mine)}"
+                  f"{' --units' if units else ''} ({seconds:.0f} s)")
+            for v in group:
+                checks, row = judge(v, group, out)
+                if checks is None:
+                    again.append([v])
+                    print(f"   {v.name} ({v.verdict}): {row}; graded again alone: another wrong body ran here")
+                    continue
+                for ok, what in checks:
+                    check(ok, what)
+                print(f"   {v.name} ({v.verdict}): {row}")
+        groups, again = again, []
+        if not groups:
+            break
     finish(f"fairness session ({len(variants)} variants)")
 
 

@@ -399,7 +399,7 @@ TEST_CASE("12.1 a triangle lying in a cutting plane is found from both sides") {
     CHECK(rt::test::disagreements(list, set.rays, set.intervals, kBsps) == 0);
 }
 
-TEST_CASE("12.5 the surface-area heuristic cuts off empty space") {
+TEST_CASE("§12.5 the surface-area heuristic cuts off empty space") {
     // Two clusters of balls far apart (x in [-10, -8] and [4, 6]): any plane between them
     // costs the same, and less than any other, so the root's plane falls in the gap.
     SurfaceList list;
