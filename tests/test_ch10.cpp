@@ -73,6 +73,22 @@ bool each_once(const TreeShape& shape) {
     return std::all_of(shape.leaf_count.begin(), shape.leaf_count.end(), [](int c) { return c == 1; });
 }
 
+// A tree built by `build` over every box, with what any valid tree has: n - 1 nodes, every
+// primitive in one leaf, boxes that hold their children.
+template <class Build>
+TreeShape checked_tree(const std::vector<Box>& boxes, Build build) {
+    BvhBuilder b(boxes);
+    std::vector<std::uint32_t> order(boxes.size());
+    std::iota(order.begin(), order.end(), 0u);
+    const BvhRef root = build(b, std::span<std::uint32_t>(order), 0);
+    const auto nodes = b.take_nodes();
+    CHECK(nodes.size() == boxes.size() - 1);
+    const TreeShape shape = shape_of(nodes, root, boxes.size(), boxes);
+    CHECK(each_once(shape));
+    CHECK(shape.boxes_hold_children);
+    return shape;
+}
+
 constexpr AccelKind kStructures[] = {AccelKind::bvh_sort, AccelKind::bvh_midpoint, AccelKind::bvh_sah, AccelKind::fast};
 
 }  // namespace
@@ -281,16 +297,8 @@ TEST_CASE("10.2 build_sorted is balanced: depth ceil(log2 n), as the course's an
             const Vec3 c = rng.vec(-10, 10);
             boxes.push_back(Box{c - Real(0.1), c + Real(0.1)});
         }
-        BvhBuilder b(boxes);
-        std::vector<std::uint32_t> order(static_cast<std::size_t>(n));
-        std::iota(order.begin(), order.end(), 0u);
-        const BvhRef root = build_sorted(b, order, 0);
-        const auto nodes = b.take_nodes();
         CAPTURE(n);
-        CHECK(nodes.size() == std::size_t(n - 1));
-        const TreeShape shape = shape_of(nodes, root, std::size_t(n), boxes);
-        CHECK(each_once(shape));
-        CHECK(shape.boxes_hold_children);
+        const TreeShape shape = checked_tree(boxes, build_sorted);
         // Either half may take the odd one out: the depth is the same.
         CHECK(shape.depth == int(std::ceil(std::log2(double(n)))));
     }
@@ -340,16 +348,9 @@ TEST_CASE("10.3 build_midpoint: every primitive once, in clusters of equal centr
             const Vec3 half = k % 5 == 4 ? Vec3(30, 0.1, 0.1) : Vec3(rng(0.05, 0.5));
             boxes.push_back(Box{c - half, c + half});
         }
-        BvhBuilder b(boxes);
-        std::vector<std::uint32_t> order(static_cast<std::size_t>(n));
-        std::iota(order.begin(), order.end(), 0u);
-        const BvhRef root = build_midpoint(b, order, 0);
-        const auto nodes = b.take_nodes();
         CAPTURE(n);
-        CHECK(nodes.size() == std::size_t(n - 1));
-        const TreeShape shape = shape_of(nodes, root, std::size_t(n), boxes);
-        CHECK(each_once(shape));
-        CHECK(shape.boxes_hold_children);
+        checked_tree(boxes,
+                     [](BvhBuilder& b, std::span<std::uint32_t> p, int axis) { return build_midpoint(b, p, axis); });
     }
 }
 
