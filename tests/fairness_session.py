@@ -217,6 +217,9 @@ def main():
         row += f"; {lines[0].strip()[:160]}" if lines else ""
         checks = [(unit_total == totals[v.chapter],
                    f"{v.name}: the denominator is {unit_total}; tests/test_ch{v.chapter}.cpp has {totals[v.chapter]}")]
+        # A failure prints values: never "{?}" (a type doctest cannot print) or a pointer.
+        unreadable = [l for l in lines if "{?}" in l or re.search(r"\b0x[0-9a-f]{6,}\b", l)]
+        checks.append((not unreadable, f"{v.name}: a failure line prints no value:\n" + "\n".join(unreadable)))
         if v.verdict == "pass":
             checks.append((full, f"{v.name} (a correct answer: {v.why}) did not get full marks: {row}\n" +
                            "\n".join(lines)))
