@@ -23,8 +23,10 @@
 //   which writes FILE.orig first.
 // With --check nothing is written: the exit code is 1 if the text outside the regions of
 // any committed copy differs from what the generator makes (bodies are not compared).
+// With --written nothing is written either: each copy with bodies that are not their stubs
+// is listed as "FILE: 2.1 2.2" (tools/grade warns when such a chapter is graded from solutions/).
 //
-//   rtlab-genex SOLUTIONS_DIR EXERCISES_DIR [--check] [--force]
+//   rtlab-genex SOLUTIONS_DIR EXERCISES_DIR [--check | --written] [--force]
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -190,9 +192,9 @@ int main(int argc, char** argv) {
         args.erase(std::remove(args.begin(), args.end(), name), args.end());
         return on;
     };
-    const bool check = flag("--check"), force = flag("--force");
+    const bool check = flag("--check"), written = flag("--written"), force = flag("--force");
     if (args.size() != 2) {
-        std::cerr << "usage: rtlab-genex SOLUTIONS_DIR EXERCISES_DIR [--check] [--force]\n";
+        std::cerr << "usage: rtlab-genex SOLUTIONS_DIR EXERCISES_DIR [--check | --written] [--force]\n";
         return 2;
     }
     const fs::path solutions(args[0]), exercises(args[1]);
@@ -207,6 +209,7 @@ int main(int argc, char** argv) {
             const Parsed want = generate(src, read_file(src));
             const fs::path dst = exercises / src.filename();
             if (!fs::exists(dst)) {
+                if (written) continue;
                 if (check) {
                     std::cerr << dst.string() << " is missing: run ./lab exercises\n";
                     ++stale;
@@ -221,7 +224,7 @@ int main(int argc, char** argv) {
             const Parsed have = parse(dst.string(), old_text);
             // The student's bodies: every one that is not the stub it started as.
             std::map<std::string, std::string> bodies = want.body;
-            std::vector<std::string> orphans;
+            std::vector<std::string> orphans, mine;
             int kept = 0;
             for (const auto& [id, body] : have.body) {
                 const auto stub = want.body.find(id);
@@ -230,7 +233,16 @@ int main(int argc, char** argv) {
                 } else if (body != stub->second) {
                     bodies[id] = body;
                     ++kept;
+                    if (id != kHelpersId) mine.push_back(id);
                 }
+            }
+            if (written) {
+                if (!mine.empty()) {
+                    std::cout << dst.string() << ':';
+                    for (const auto& id : mine) std::cout << ' ' << id;
+                    std::cout << '\n';
+                }
+                continue;
             }
             const bool outside_changed = have.outside != want.outside;
             if (check) {
@@ -259,6 +271,7 @@ int main(int argc, char** argv) {
             write_file(dst, text);
             std::cout << "wrote " << dst.string() << " (kept " << kept << " exercise bodies written there)\n";
         }
+        if (written) return 0;
         if (fs::is_directory(exercises))
             for (const auto& e : fs::directory_iterator(exercises))
                 if (e.path().extension() == ".cpp" && !fs::exists(solutions / e.path().filename())) {
