@@ -28,7 +28,10 @@ std::string solved_with(const std::string& chapter) {
     for (std::string ch; std::getline(list, ch, ';');)
         if (!ch.empty()) chapters.insert(ch);
     std::string out;
-    for (const std::string& ch : chapters) out += (out.empty() ? "" : ";") + ch;
+    for (const std::string& ch : chapters) {
+        if (!out.empty()) out += ';';
+        out += ch;
+    }
     return out;
 }
 
@@ -40,14 +43,13 @@ std::string one_line(std::string s) {
 }
 
 // Prints, for each failing test case, "[rtlab] failed: NAME | FIRST FAILURE | ran your
-// exercises: 10.1 10.4". The console reporter still prints everything in full above it.
+// exercises 10.1 10.4". The console reporter still prints everything in full above it.
 struct FailureLine : doctest::IReporter {
-    const doctest::ContextOptions& options;
     const doctest::TestCaseData* test = nullptr;
     std::string first;  // the first failed check of the current test case, with its context
     std::mutex lock;    // checks may be made from several threads
 
-    explicit FailureLine(const doctest::ContextOptions& o) : options(o) {}
+    explicit FailureLine(const doctest::ContextOptions&) {}
 
     static std::string context() {
         std::string out;
@@ -56,7 +58,8 @@ struct FailureLine : doctest::IReporter {
         for (int i = 0; i < n; ++i) {
             std::ostringstream s;
             scopes[i]->stringify(&s);
-            out += (out.empty() ? "" : "; ") + one_line(s.str());
+            if (!out.empty()) out += "; ";
+            out += one_line(s.str());
         }
         return out.empty() ? "" : " [" + out + "]";
     }

@@ -39,8 +39,10 @@ inline std::string list() {
     std::string out;
     for (int c = 0; c < kChapters; ++c)
         for (int n = 0; n < kNumbers; ++n)
-            if (ran[c][n].load(std::memory_order_relaxed))
-                out += (out.empty() ? "" : " ") + std::to_string(c) + "." + std::to_string(n);
+            if (ran[c][n].load(std::memory_order_relaxed)) {
+                if (!out.empty()) out += ' ';
+                out += std::to_string(c) + '.' + std::to_string(n);
+            }
     return out;
 }
 
