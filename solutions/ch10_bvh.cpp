@@ -1,6 +1,6 @@
 // Chapter 10 exercises: bounding boxes and the bounding volume hierarchy (book §10, course
-// §9.9.1-9.9.2). Declared in common/accel/bvh.hpp.
-#include "accel/bvh.hpp"
+// §9.9.1-9.9.2). Declared in common/accel/course_bvh.hpp.
+#include "accel/course_bvh.hpp"
 #include "core/exercise.hpp"
 
 #include <algorithm>

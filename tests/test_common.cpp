@@ -1,5 +1,6 @@
 // The shared library: images, sampling, the render loop.
-#include "core/bvh.hpp"
+#include "core/flat_bvh.hpp"
+#include "core/float_round.hpp"
 #include "geometry/mesh.hpp"
 #include "geometry/procedural.hpp"
 #include "geometry/sphere.hpp"

@@ -63,7 +63,7 @@ bool BruteForce::occluded(const SurfaceList& surfaces, const Ray& ray, Interval 
 
 namespace {
 
-std::variant<BruteForce, Bvh, Grid, Bsp, FastBvh> make(const SurfaceList& surfaces, AccelKind kind) {
+std::variant<BruteForce, Bvh, Grid, Bsp, TwoLevelBvh> make(const SurfaceList& surfaces, AccelKind kind) {
     switch (kind) {
         case AccelKind::bvh_sort:
             return Bvh(surfaces, BvhBuild::sorted);
@@ -78,7 +78,7 @@ std::variant<BruteForce, Bvh, Grid, Bsp, FastBvh> make(const SurfaceList& surfac
         case AccelKind::bsp:
             return Bsp(surfaces, BspBuild::sah);
         case AccelKind::fast:
-            return FastBvh(surfaces);
+            return TwoLevelBvh(surfaces);
         case AccelKind::none:
             break;
     }
@@ -111,7 +111,7 @@ Accel::Accel(const SurfaceList& surfaces, AccelKind kind)
         info_.nodes = t->node_count();
         info_.bytes = t->memory_bytes();
         info_.depth = t->depth();
-    } else if (const auto* f = std::get_if<FastBvh>(&impl_)) {
+    } else if (const auto* f = std::get_if<TwoLevelBvh>(&impl_)) {
         info_.primitives = primitives_of(surfaces).size();
         info_.nodes = f->node_count(surfaces);
         info_.bytes = f->memory_bytes(surfaces);

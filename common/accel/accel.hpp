@@ -10,8 +10,8 @@
 //   fast          the two-level flat BVH (the default; library code only)
 // All return the same closest hit (t, surface and primitive) and the same any-hit answer.
 #include "accel/bsp.hpp"
-#include "accel/bvh.hpp"
-#include "accel/fast_bvh.hpp"
+#include "accel/course_bvh.hpp"
+#include "accel/two_level_bvh.hpp"
 #include "accel/grid.hpp"
 #include "accel/primitive.hpp"
 #include "core/dispatch.hpp"
@@ -71,7 +71,7 @@ public:
 
 private:
     AccelInfo info_;  // before impl_: building impl_ records its time here
-    std::variant<BruteForce, Bvh, Grid, Bsp, FastBvh> impl_;
+    std::variant<BruteForce, Bvh, Grid, Bsp, TwoLevelBvh> impl_;
 };
 
 }  // namespace rt

@@ -1,6 +1,6 @@
 #include "accel/grid.hpp"
 
-#include "core/bvh.hpp"
+#include "core/flat_bvh.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -2,6 +2,7 @@
 // Rays cast, by kind, and shading work done. Each render tile counts into its own copy and
 // the copies are summed at the end, so counting costs no synchronisation on the hot path.
 #include "core/sampler.hpp"
+#include "core/traversal_count.hpp"
 
 #include <array>
 #include <cstddef>
@@ -22,7 +23,7 @@ struct RayCounters {
     // Samples whose radiance came out NaN or infinite, and were left out of their pixel.
     // Zero for every scene the lab ships: the tests check it.
     std::uint64_t nonfinite_samples = 0;
-    // Search work (core/bvh.hpp, TraversalCount): boxes and primitives tested.
+    // Search work (core/traversal_count.hpp): boxes and primitives tested.
     std::uint64_t nodes_visited = 0;
     std::uint64_t primitives_tested = 0;
     // Random numbers drawn, by dimension: a scene that does not use an effect (no lens, nothing

@@ -33,7 +33,7 @@ struct Gather {
 
     explicit Gather(const FlatBvh& b) : bvh(b), cost(b.nodes.size()), j(b.nodes.size()) {}
 
-    // Bottom-up: children are numbered after their parent (core/bvh.cpp), so a reverse
+    // Bottom-up: children are numbered after their parent (core/flat_bvh.cpp), so a reverse
     // sweep meets them first, with no recursion.
     void run() {
         for (std::size_t n = bvh.nodes.size(); n-- > 0;) {

@@ -1,5 +1,5 @@
 #pragma once
-// A wide BVH: the binary SAH tree of core/bvh.hpp collapsed so that each node holds the
+// A wide BVH: the binary SAH tree of core/flat_bvh.hpp collapsed so that each node holds the
 // boxes of up to W children side by side (book §10.5), as Embree and tinybvh lay out theirs.
 // One node visit tests W boxes with one instruction per plane, and the tree is about log2(W)
 // times shallower than the binary one.
@@ -8,7 +8,8 @@
 // test is pushed outwards (WideRay below), so a box the ray meets in exact arithmetic is
 // always entered, and its entry distance is never overestimated. The leaves then decide in
 // Real, as brute force does, so the hits found are exactly brute force's.
-#include "core/bvh.hpp"
+#include "core/flat_bvh.hpp"
+#include "core/float_round.hpp"
 #include "core/search_memory.hpp"
 
 #include <immintrin.h>
@@ -283,7 +284,7 @@ inline int push_children(const WideNode<W>& node, unsigned mask, const typename 
 // each visit can be a trip to memory, it is on its way when its turn comes. A node with one
 // child entered pushes nothing: the search goes straight on (about half the visits of a
 // primary ray on the bunny).
-// - The closest hit (kAny false), as closest_hit() in core/bvh.hpp: leaf narrows
+// - The closest hit (kAny false), as closest_hit() in core/flat_bvh.hpp: leaf narrows
 //   interval.max and returns true when it finds a closer hit, and a child whose entry lies
 //   beyond the best hit found since it was pushed is skipped.
 // - Any hit (kAny true): the first leaf that returns true ends the search.

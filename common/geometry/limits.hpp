@@ -1,5 +1,5 @@
 #pragma once
-// Every limit a scene, a mesh, an image or a command line may ask for, stated once. The
+// Every limit a scene or a mesh may ask for, stated once (resources: core/limits.hpp). The
 // generators, the loaders and the command line check them and name them in their messages,
 // the JSON Schema is tested against them (tests/schema_test.py), book appendix A prints
 // this table and the README lists the resource limits.
@@ -9,16 +9,9 @@
 // the ray tests form (at most the cube of a coordinate difference, 8e24) far below float's
 // 3.4e38; reflectances at most 1 keep a ray tree from amplifying light; radiances at most
 // 1e6 keep a pixel's sum over lights finite.
-#include <string>
+#include "core/limits.hpp"
 
 namespace rt::limits {
-
-struct Range {
-    const char* name;    // as the messages say it
-    double min, max;     // both allowed
-    const char* what;    // "" for a count or a plain number; else its unit ("bytes", "degrees")
-    const char* schema;  // where the JSON Schema states it (JSON pointer); "" if not a scene value
-};
 
 // @book limits
 // Values in a scene file.
@@ -47,20 +40,10 @@ inline constexpr Range soup_count{"soup triangles", 1, 1000000, "", "/$defs/surf
 inline constexpr Range soup_seed{"soup seed", 0, 2147483647, "", "/$defs/surface/oneOf/7/properties/seed"};
 inline constexpr Range csg_operands{"CSG operands", 2, 1024, "", "/$defs/surface/oneOf/10/properties/operands"};
 inline constexpr Range csg_thin{"CSG thin", 0, 1e8, "", "/$defs/surface/oneOf/10/properties/thin"};
-// Resources: inputs past these are refused before any work is spent on them.
-inline constexpr Range json_depth{"JSON nesting depth", 1, 32, "", ""};
-inline constexpr Range scene_file_bytes{"scene file size", 0, 16 << 20, "bytes", ""};
-inline constexpr Range obj_file_bytes{"OBJ file size", 0, 1 << 30, "bytes", ""};
+// Meshes.
 inline constexpr Range obj_face_corners{"OBJ face corners", 3, 255, "", ""};  // tinyobjloader keeps a byte
 inline constexpr Range mesh_vertices{"mesh vertices", 3, 1 << 25, "", ""};
 inline constexpr Range mesh_triangles{"mesh triangles", 1, 1 << 25, "", ""};
-inline constexpr Range image_file_bytes{"image file size", 0, 1 << 29, "bytes", ""};
-inline constexpr Range image_side{"image width and height", 1, 16384, "pixels", ""};
-inline constexpr Range image_pixels{"image size", 1, 1 << 25, "pixels", ""};
-inline constexpr Range samples_per_pixel{"samples per pixel", 1, 65536, "",
-                                         "/properties/antialiasing/properties/samples"};
-inline constexpr Range image_samples{"samples per image", 1, 4294967296.0, "width x height x spp", ""};
-inline constexpr Range threads{"threads", 0, 1024, "", ""};
 // @book-end
 
 inline constexpr Range all[] = {coordinate,
@@ -96,15 +79,5 @@ inline constexpr Range all[] = {coordinate,
                                 samples_per_pixel,
                                 image_samples,
                                 threads};
-
-// True if `value` is in the range (a NaN never is).
-inline constexpr bool contains(const Range& r, double value) {
-    return value >= r.min && value <= r.max;
-}
-
-// "must be in 0..7", "must be in 1e-06..1e+08": the tail of a message.
-std::string describe(const Range& r);
-// "icosphere subdivisions must be in 0..7, not 9"
-std::string refuse(const Range& r, double value);
 
 }  // namespace rt::limits

@@ -1,5 +1,7 @@
 #include "geometry/triangle_block.hpp"
 
+#include "core/float_round.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <utility>

@@ -1,7 +1,7 @@
 #pragma once
 // Reading a whole input file, refused early and in one line if it is not a regular file or
 // is larger than its limit: a scene, a mesh or an image never costs more than its limit.
-#include "geometry/limits.hpp"
+#include "core/limits.hpp"
 
 #include <string>
 

@@ -1,6 +1,6 @@
 #include "io/json_locations.hpp"
 
-#include "geometry/limits.hpp"
+#include "core/limits.hpp"
 
 #include <cctype>
 #include <cmath>

@@ -1,6 +1,7 @@
 #include "io/obj.hpp"
 
 #include "core/text.hpp"
+#include "geometry/limits.hpp"
 #include "io/input_file.hpp"
 
 #include <tiny_obj_loader.h>

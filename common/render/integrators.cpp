@@ -1,6 +1,6 @@
 #include "render/integrators.hpp"
 
-#include "core/bvh.hpp"
+#include "core/flat_bvh.hpp"
 #include "render/whitted.hpp"
 
 #include <algorithm>

@@ -1,8 +1,8 @@
 #include "render/render.hpp"
 
-#include "core/bvh.hpp"
+#include "core/flat_bvh.hpp"
 
-#include "geometry/limits.hpp"
+#include "core/limits.hpp"
 
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>

@@ -1,4 +1,4 @@
-#include "accel/fast_bvh.hpp"
+#include "accel/two_level_bvh.hpp"
 
 #include "accel/primitive.hpp"
 
@@ -6,14 +6,14 @@
 
 namespace rt {
 
-FastBvh::FastBvh(const SurfaceList& surfaces) {
+TwoLevelBvh::TwoLevelBvh(const SurfaceList& surfaces) {
     std::vector<Box> boxes;
     boxes.reserve(surfaces.size());
     for (const Surface& s : surfaces.surfaces()) boxes.push_back(s.bounding_box());
     bvh_ = build_bvh(boxes, 2);
 }
 
-bool FastBvh::hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
+bool TwoLevelBvh::hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
     // A scene of one surface (a mesh alone) needs no upper level: its own search is the whole.
     if (surfaces.size() == 1) return surfaces[SurfaceId(0)].hit(ray, interval, rec);
     HitRecord best = no_hit_before(interval.max);
@@ -26,7 +26,7 @@ bool FastBvh::hit(const SurfaceList& surfaces, const Ray& ray, Interval interval
     return found;
 }
 
-bool FastBvh::occluded(const SurfaceList& surfaces, const Ray& ray, Interval interval) const {
+bool TwoLevelBvh::occluded(const SurfaceList& surfaces, const Ray& ray, Interval interval) const {
     if (surfaces.size() == 1) return surfaces[SurfaceId(0)].occluded(ray, interval);
     return any_hit(bvh_, ray, interval,
                    [&](std::uint32_t k, Interval& iv) { return surfaces[SurfaceId(bvh_.items[k])].occluded(ray, iv); });
@@ -53,13 +53,13 @@ void for_each_mesh_accel(const SurfaceList& surfaces, F&& f) {
 
 }  // namespace
 
-std::size_t FastBvh::memory_bytes(const SurfaceList& surfaces) const {
+std::size_t TwoLevelBvh::memory_bytes(const SurfaceList& surfaces) const {
     std::size_t bytes = bvh_.memory_bytes();
     for_each_mesh_accel(surfaces, [&](const MeshAccel& a) { bytes += a.memory_bytes(); });
     return bytes;
 }
 
-std::size_t FastBvh::node_count(const SurfaceList& surfaces) const {
+std::size_t TwoLevelBvh::node_count(const SurfaceList& surfaces) const {
     std::size_t nodes = bvh_.nodes.size();
     for_each_mesh_accel(surfaces, [&](const MeshAccel& a) { nodes += a.wide.nodes.size(); });
     return nodes;

@@ -1,6 +1,6 @@
-#include "accel/bvh.hpp"
+#include "accel/course_bvh.hpp"
 
-#include "core/bvh.hpp"
+#include "core/flat_bvh.hpp"
 
 #include <algorithm>
 #include <numeric>
@@ -22,7 +22,7 @@ BvhRef BvhBuilder::add_node(BvhRef left, BvhRef right) {
 
 namespace {
 
-// The SAH tree of core/bvh.hpp, one primitive a leaf, in the course's node form.
+// The SAH tree of core/flat_bvh.hpp, one primitive a leaf, in the course's node form.
 BvhRef from_flat(BvhBuilder& b, const FlatBvh& flat, std::uint32_t at) {
     const BvhNode& n = flat.nodes[at];
     if (n.leaf()) return b.primitive(flat.items[n.first]);

@@ -1,4 +1,4 @@
-#include "geometry/limits.hpp"
+#include "core/limits.hpp"
 
 #include <cmath>
 #include <cstdio>

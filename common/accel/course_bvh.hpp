@@ -4,7 +4,7 @@
 // two recipes (exercises 10.2 and 10.3) or the surface-area heuristic, and searched by the
 // course's recursive hit (exercise 10.4). Like the course's bvh-node it is a surface: it
 // answers the same queries (hit, occluded, bounding_box). The renderer's default is the
-// faster form of the same idea, accel/fast_bvh.hpp; both return the same hits.
+// faster form of the same idea, accel/two_level_bvh.hpp; both return the same hits.
 #include "accel/primitive.hpp"
 
 #include <span>

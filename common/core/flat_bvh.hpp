@@ -3,58 +3,17 @@
 // 32 bytes in one array, a surface-area-heuristic build, and loops instead of recursion.
 // It knows nothing of what it holds: items are numbers, and the caller's `leaf` function
 // tests one. Meshes use it over their triangles, and the scene over its surfaces: the two
-// levels of the fast path (accel/fast_bvh.hpp). The course's form, the one students build,
-// is accel/bvh.hpp.
+// levels of the fast path (accel/two_level_bvh.hpp). The course's form, the one students build,
+// is accel/course_bvh.hpp.
 #include "core/box.hpp"
+#include "core/traversal_count.hpp"
 
-#include <bit>
 #include <cstdint>
 #include <span>
 #include <utility>
 #include <vector>
 
 namespace rt {
-
-// Rounding a Real to a float below or above it. Stepping the bits by one is nextafter for
-// the finite floats that can need it (an infinity converts exactly), without a libm call
-// in the per-ray set-up.
-inline float float_below(Real x) {
-    const float f = float(x);
-    if (!(Real(f) > x)) return f;
-    const auto b = std::bit_cast<std::uint32_t>(f);
-    return f > 0 ? std::bit_cast<float>(b - 1) : f < 0 ? std::bit_cast<float>(b + 1) : -0x1p-149f;
-}
-inline float float_above(Real x) {
-    return -float_below(-x);
-}
-
-// float_below and float_above of a point's three coordinates at once, as four-lane vectors
-// (the per-ray set-up of the wide BVH: branches there cost more than the arithmetic). Where
-// the conversion rounded the wrong way, the bits step by one towards the value: down for
-// below, up for above, which is -1 or +1 on the bits by the sign (the zero that can need a
-// step has the sign the step needs: -0 below a tiny negative value, +0 above a tiny positive one).
-inline void float_bounds(const Vec3& p, float (&below)[3], float (&above)[3]) {
-    if constexpr (sizeof(Real) == sizeof(float)) {
-        for (int a = 0; a < 3; ++a) below[a] = above[a] = float(p[a]);
-    } else {
-        using D4 = double __attribute__((vector_size(32)));
-        using F4 = float __attribute__((vector_size(16)));
-        using I4 = std::int32_t __attribute__((vector_size(16)));
-        const D4 x = {double(p.x), double(p.y), double(p.z), 0};
-        const F4 f = __builtin_convertvector(x, F4);
-        const D4 back = __builtin_convertvector(f, D4);
-        using I8 = std::int32_t __attribute__((vector_size(32)));
-        const I8 up8 = I8(back > x), down8 = I8(back < x);  // each lane's mask is two equal halves
-        const I4 up = __builtin_shufflevector(up8, up8, 0, 2, 4, 6);
-        const I4 down = __builtin_shufflevector(down8, down8, 0, 2, 4, 6);
-        const I4 bits = I4(f), step = (bits >> 31) | 1;  // -1 for a negative float, +1 otherwise
-        const F4 lo = F4(bits - (step & up)), hi = F4(bits + (step & down));
-        for (int a = 0; a < 3; ++a) {
-            below[a] = lo[a];
-            above[a] = hi[a];
-        }
-    }
-}
 
 struct BvhNode {
     float lo[3];
@@ -83,29 +42,6 @@ FlatBvh build_bvh(std::span<const Box> boxes, unsigned max_leaf = 4, unsigned la
 // Deeper trees are cut to median splits while building, so a traversal stack of this many
 // entries always suffices.
 inline constexpr int kMaxBvhDepth = 60;
-
-// Work done by queries, for --stats: the same on every machine.
-struct TraversalCount {
-    std::uint64_t nodes = 0;  // boxes tested
-    std::uint64_t items = 0;  // primitives tested
-
-    TraversalCount& operator+=(const TraversalCount& o) {
-        nodes += o.nodes;
-        items += o.items;
-        return *this;
-    }
-};
-
-// Every query on this thread adds its work here; the render loop takes it into each tile's
-// counters (a tile runs on one thread). Queries stay free of a counter parameter, and a mesh
-// inside an instance counts like any other.
-inline thread_local TraversalCount traversal_tally;
-
-// Counts in registers while a query runs, and adds them to the tally once at the end.
-struct TallyScope {
-    TraversalCount count;
-    ~TallyScope() { traversal_tally += count; }
-};
 
 // A ray prepared for many box tests: 1/d once per ray. A direction component of +0 or -0
 // gives +inf or -inf, whose sign still says which slab plane comes first (course §9.9.1).

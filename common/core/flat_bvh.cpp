@@ -1,4 +1,5 @@
-#include "core/bvh.hpp"
+#include "core/flat_bvh.hpp"
+#include "core/float_round.hpp"
 
 #include <algorithm>
 #include <array>
