@@ -95,28 +95,31 @@ Accel::Accel(const SurfaceList& surfaces, AccelKind kind)
           return impl;
       }()) {
     info_.kind = kind;
-    if (const auto* b = std::get_if<BruteForce>(&impl_)) {
-        info_.primitives = b->primitive_count();
-    } else if (const auto* b = std::get_if<Bvh>(&impl_)) {
-        info_.primitives = b->primitive_count();
-        info_.nodes = b->node_count();
-        info_.bytes = b->memory_bytes();
-        info_.depth = b->depth();
-    } else if (const auto* g = std::get_if<Grid>(&impl_)) {
-        info_.primitives = g->primitive_count();
-        info_.nodes = g->cell_count();
-        info_.bytes = g->memory_bytes();
-    } else if (const auto* t = std::get_if<Bsp>(&impl_)) {
-        info_.primitives = t->primitive_count();
-        info_.nodes = t->node_count();
-        info_.bytes = t->memory_bytes();
-        info_.depth = t->depth();
-    } else if (const auto* f = std::get_if<TwoLevelBvh>(&impl_)) {
-        info_.primitives = primitives_of(surfaces).size();
-        info_.nodes = f->node_count(surfaces);
-        info_.bytes = f->memory_bytes(surfaces);
-        info_.depth = f->upper().depth;
-    }
+    match(
+        impl_, [&](const BruteForce& b) { info_.primitives = b.primitive_count(); },
+        [&](const Bvh& b) {
+            info_.primitives = b.primitive_count();
+            info_.nodes = b.node_count();
+            info_.bytes = b.memory_bytes();
+            info_.depth = b.depth();
+        },
+        [&](const Grid& g) {
+            info_.primitives = g.primitive_count();
+            info_.nodes = g.cell_count();
+            info_.bytes = g.memory_bytes();
+        },
+        [&](const Bsp& t) {
+            info_.primitives = t.primitive_count();
+            info_.nodes = t.node_count();
+            info_.bytes = t.memory_bytes();
+            info_.depth = t.depth();
+        },
+        [&](const TwoLevelBvh& f) {
+            info_.primitives = primitives_of(surfaces).size();
+            info_.nodes = f.node_count(surfaces);
+            info_.bytes = f.memory_bytes(surfaces);
+            info_.depth = f.upper().depth;
+        });
 }
 
 }  // namespace rt

@@ -39,14 +39,17 @@ template <class F>
 void for_each_mesh_accel(const SurfaceList& surfaces, F&& f) {
     std::set<const MeshAccel*> seen;
     const auto visit = [&](const Shape& shape, const auto& self) -> void {
-        if (const auto* mesh = std::get_if<Mesh>(&shape)) {
-            if (seen.insert(&mesh->accel()).second) f(mesh->accel());
-        } else if (const auto* instance = std::get_if<Instance>(&shape)) {
-            self(instance->base(), self);
-        } else if (const auto* csg = std::get_if<Csg>(&shape)) {
-            self(*csg->left().shape, self);
-            self(*csg->right().shape, self);
-        }
+        match(
+            shape,
+            [&](const Mesh& mesh) {
+                if (seen.insert(&mesh.accel()).second) f(mesh.accel());
+            },
+            [&](const Instance& instance) { self(instance.base(), self); },
+            [&](const Csg& csg) {
+                self(*csg.left().shape, self);
+                self(*csg.right().shape, self);
+            },
+            [](const Sphere&) {}, [](const Triangle&) {}, [](const Polygon&) {}, [](const Cuboid&) {});
     };
     for (const Surface& s : surfaces.surfaces()) visit(s.shape, visit);
 }

@@ -4,7 +4,6 @@
 #include "core/build_info.hpp"
 #include "core/exercise.hpp"
 #include "core/text.hpp"
-#include "core/version.hpp"
 #include "geometry/limits.hpp"
 #include "io/image_file.hpp"
 
@@ -236,7 +235,7 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
         ->check(CLI::IsMember({"box", "tent"}));
     cli.add_flag("--stats", inv.stats, "print render statistics as one JSON line");
     cli.set_version_flag("--version",
-                         std::string(id_ + " (rtlab " + kVersion + ", Real=" + real_name() + ", " + build_info::track +
+                         std::string(id_ + " (rtlab " + build_info::version + ", Real=" + real_name() + ", " + build_info::track +
                                      " track, exercises from solutions/: " + build_info::from_solutions + ")"));
 
     const auto usage = [&](const std::string& message) {

@@ -91,52 +91,63 @@ void draw_shape(const Shape& shape, const Affine& to_world, const PageProjection
         "fill=\"#d9dde3\" fill-opacity=\"0.55\" stroke=\"#6b7280\" stroke-width=\"" + num(unit) + "\"";
     const char* kFill = fill_style.c_str();
     constexpr std::size_t kMaxTriangles = 3000;  // past this, a mesh is drawn as the hull of its vertices
-    if (const auto* moving = std::get_if<Sphere>(&shape)) {
-        const Sphere at = moving->at(time);
-        const Sphere* s = &at;
-        std::vector<P2> pts;  // the silhouette of a (transformed) sphere: the hull of points on it
-        for (int i = 0; i <= 16; ++i)
-            for (int j = 0; j < 32; ++j) {
-                const double th = M_PI * i / 16, ph = 2 * M_PI * j / 32;
-                const Vec3 d(Real(std::sin(th) * std::cos(ph)), Real(std::cos(th)), Real(std::sin(th) * std::sin(ph)));
-                pts.push_back(proj(to_world.point(s->center + s->radius * d)));
-            }
-        out += polygon(hull(pts), kFill);
-    } else if (const auto* t = std::get_if<Triangle>(&shape)) {
-        out += polygon({proj(to_world.point(t->a)), proj(to_world.point(t->b)), proj(to_world.point(t->c))}, kFill);
-    } else if (const auto* p = std::get_if<Polygon>(&shape)) {
+    // The silhouette of a (transformed) convex solid: the hull of points on it.
+    const auto hull_of = [&](const std::vector<Vec3>& points) {
         std::vector<P2> pts;
-        for (const Vec3& v : p->vertices()) pts.push_back(proj(to_world.point(v)));
-        out += polygon(pts, kFill);
-    } else if (const auto* m = std::get_if<Mesh>(&shape)) {
-        const MeshData& d = m->data();
-        if (d.triangles.size() > kMaxTriangles) {
-            std::vector<P2> pts;
-            for (const Vec3& v : d.positions) pts.push_back(proj(to_world.point(v)));
-            out += polygon(hull(pts), kFill);
-            return;
-        }
-        out += "<path fill=\"#d9dde3\" fill-opacity=\"0.25\" stroke=\"#9ca3af\" stroke-width=\"" + num(0.5 * unit) +
-               "\" d=\"";
-        for (const auto& tri : d.triangles) {
-            const P2 a = proj(to_world.point(d.positions[tri[0]])), b = proj(to_world.point(d.positions[tri[1]])),
-                     c = proj(to_world.point(d.positions[tri[2]]));
-            out += "M" + num(a.x) + "," + num(a.y) + "L" + num(b.x) + "," + num(b.y) + "L" + num(c.x) + "," + num(c.y) +
-                   "Z";
-        }
-        out += "\"/>\n";
-    } else if (const auto* in = std::get_if<Instance>(&shape)) {
-        draw_shape(in->base(), in->to_world().then(to_world), proj, unit, time, out);
-    } else if (const auto* box = std::get_if<Cuboid>(&shape)) {
-        std::vector<P2> pts;  // the silhouette of a (transformed) box: the hull of its corners
-        for (int k = 0; k < 8; ++k)
-            pts.push_back(proj(to_world.point(Vec3(k & 1 ? box->max.x : box->min.x, k & 2 ? box->max.y : box->min.y,
-                                                   k & 4 ? box->max.z : box->min.z))));
+        for (const Vec3& p : points) pts.push_back(proj(to_world.point(p)));
         out += polygon(hull(pts), kFill);
-    } else if (const auto* csg = std::get_if<Csg>(&shape)) {  // both operands, as outlines
-        draw_shape(*csg->left().shape, to_world, proj, unit, time, out);
-        draw_shape(*csg->right().shape, to_world, proj, unit, time, out);
-    }
+    };
+    match(
+        shape,
+        [&](const Sphere& moving) {
+            const Sphere s = moving.at(time);
+            std::vector<Vec3> points;
+            for (int i = 0; i <= 16; ++i)
+                for (int j = 0; j < 32; ++j) {
+                    const double th = M_PI * i / 16, ph = 2 * M_PI * j / 32;
+                    const Vec3 d(Real(std::sin(th) * std::cos(ph)), Real(std::cos(th)),
+                                 Real(std::sin(th) * std::sin(ph)));
+                    points.push_back(s.center + s.radius * d);
+                }
+            hull_of(points);
+        },
+        [&](const Triangle& t) {
+            out += polygon({proj(to_world.point(t.a)), proj(to_world.point(t.b)), proj(to_world.point(t.c))}, kFill);
+        },
+        [&](const Polygon& p) {
+            std::vector<P2> pts;
+            for (const Vec3& v : p.vertices()) pts.push_back(proj(to_world.point(v)));
+            out += polygon(pts, kFill);
+        },
+        [&](const Mesh& m) {
+            const MeshData& d = m.data();
+            if (d.triangles.size() > kMaxTriangles) {
+                std::vector<Vec3> points(d.positions.begin(), d.positions.end());
+                hull_of(points);
+                return;
+            }
+            out += "<path fill=\"#d9dde3\" fill-opacity=\"0.25\" stroke=\"#9ca3af\" stroke-width=\"" + num(0.5 * unit) +
+                   "\" d=\"";
+            for (const auto& tri : d.triangles) {
+                const P2 a = proj(to_world.point(d.positions[tri[0]])), b = proj(to_world.point(d.positions[tri[1]])),
+                         c = proj(to_world.point(d.positions[tri[2]]));
+                out += "M" + num(a.x) + "," + num(a.y) + "L" + num(b.x) + "," + num(b.y) + "L" + num(c.x) + "," +
+                       num(c.y) + "Z";
+            }
+            out += "\"/>\n";
+        },
+        [&](const Instance& in) { draw_shape(in.base(), in.to_world().then(to_world), proj, unit, time, out); },
+        [&](const Cuboid& box) {
+            std::vector<Vec3> corners;
+            for (int k = 0; k < 8; ++k)
+                corners.push_back(Vec3(k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y,
+                                       k & 4 ? box.max.z : box.min.z));
+            hull_of(corners);
+        },
+        [&](const Csg& csg) {  // both operands, as outlines
+            draw_shape(*csg.left().shape, to_world, proj, unit, time, out);
+            draw_shape(*csg.right().shape, to_world, proj, unit, time, out);
+        });
 }
 
 const char* kind_color(RayKind k) {

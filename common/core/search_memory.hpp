@@ -4,9 +4,9 @@
 // so with 4 KiB pages nearly every visit on a big mesh also needs a page translation the
 // TLB does not hold. An array of 2 MiB or more is therefore placed on a 2 MiB boundary and
 // the kernel asked to back it with huge pages (madvise, which Linux's default "madvise"
-// setting for transparent huge pages honours). On the dragon (871,306 triangles) that took
-// the primary rays from 0.87 to 0.94-0.96 of Embree's speed (book §10.7). Smaller arrays,
-// and systems that decline, get ordinary memory: only speed depends on it.
+// setting for transparent huge pages honours); book §10.7 measures what that gains on the
+// dragon. Smaller arrays, and systems that decline, get ordinary memory: only speed depends
+// on it.
 #include <sys/mman.h>
 
 #include <cstddef>

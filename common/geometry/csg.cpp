@@ -52,17 +52,22 @@ bool closed(const MeshData& d) {
     return true;
 }
 
+// Every other kind is one leaf, seen through instances.
 std::uint32_t leaf_count(const Shape& shape) {
-    if (const auto* c = std::get_if<Csg>(&shape)) return c->leaves();
-    if (const auto* in = std::get_if<Instance>(&shape)) return leaf_count(in->base());
-    return 1;
+    using N = std::uint32_t;
+    return match(
+        shape, [](const Csg& c) { return c.leaves(); }, [](const Instance& in) { return leaf_count(in.base()); },
+        [](const Sphere&) { return N(1); }, [](const Triangle&) { return N(1); }, [](const Polygon&) { return N(1); },
+        [](const Mesh&) { return N(1); }, [](const Cuboid&) { return N(1); });
 }
 
 // The nearest CSG object inside a shape (itself, or under instances), if any.
 const Csg* csg_in(const Shape& shape) {
-    if (const auto* c = std::get_if<Csg>(&shape)) return c;
-    if (const auto* in = std::get_if<Instance>(&shape)) return csg_in(in->base());
-    return nullptr;
+    return match(
+        shape, [](const Csg& c) -> const Csg* { return &c; },
+        [](const Instance& in) { return csg_in(in.base()); }, [](const Sphere&) -> const Csg* { return nullptr; },
+        [](const Triangle&) -> const Csg* { return nullptr; }, [](const Polygon&) -> const Csg* { return nullptr; },
+        [](const Mesh&) -> const Csg* { return nullptr; }, [](const Cuboid&) -> const Csg* { return nullptr; });
 }
 
 // An operand's spans, owned by the CSG above: parts numbered from `first_leaf`, material
@@ -157,33 +162,29 @@ double signed_volume6(const MeshData& mesh) {
 }
 
 std::string not_solid(const Shape& shape) {
-    if (std::holds_alternative<Triangle>(shape)) return "a triangle has no inside";
-    if (std::holds_alternative<Polygon>(shape)) return "a polygon has no inside";
-    if (const auto* m = std::get_if<Mesh>(&shape)) {
-        if (!closed(m->data()))
-            return "the mesh is not closed (an edge without exactly one partner running the other way)";
-        // Its spans would come out reversed (every entry an exit): it would vanish from the result.
-        if (!(signed_volume6(m->data()) > 0))
-            return "the mesh is inside out (its triangles wind clockwise seen from outside: no volume inside)";
-        return "";
-    }
-    if (const auto* in = std::get_if<Instance>(&shape)) return not_solid(in->base());
-    return "";
+    return match(
+        shape, [](const Sphere&) { return std::string(); },
+        [](const Triangle&) { return std::string("a triangle has no inside"); },
+        [](const Polygon&) { return std::string("a polygon has no inside"); },
+        [](const Mesh& m) -> std::string {
+            if (!closed(m.data()))
+                return "the mesh is not closed (an edge without exactly one partner running the other way)";
+            // Its spans would come out reversed (every entry an exit): it would vanish from the result.
+            if (!(signed_volume6(m.data()) > 0))
+                return "the mesh is inside out (its triangles wind clockwise seen from outside: no volume inside)";
+            return "";
+        },
+        [](const Instance& in) { return not_solid(in.base()); }, [](const Cuboid&) { return std::string(); },
+        [](const Csg&) { return std::string(); });
 }
 
 void spans(const Shape& shape, const Ray& ray, SpanList& out) {
-    if (const auto* s = std::get_if<Sphere>(&shape))
-        out = sphere_spans(*s, ray);
-    else if (const auto* c = std::get_if<Cuboid>(&shape))
-        out = cuboid_spans(*c, ray);
-    else if (const auto* m = std::get_if<Mesh>(&shape))
-        out = mesh_spans(*m, ray);
-    else if (const auto* in = std::get_if<Instance>(&shape))
-        out = instance_spans(*in, ray);
-    else if (const auto* g = std::get_if<Csg>(&shape))
-        out = csg_spans(*g, ray);
-    else
-        out.clear();  // not a solid: the Csg constructor refuses these
+    out = match(
+        shape, [&](const Sphere& s) { return sphere_spans(s, ray); },
+        [&](const Cuboid& c) { return cuboid_spans(c, ray); }, [&](const Mesh& m) { return mesh_spans(m, ray); },
+        [&](const Instance& in) { return instance_spans(in, ray); }, [&](const Csg& g) { return csg_spans(g, ray); },
+        // Flat shapes have no inside: the Csg constructor refuses them as operands (not_solid).
+        [](const Triangle&) { return SpanList(); }, [](const Polygon&) { return SpanList(); });
 }
 
 Csg::Csg(CsgOp op, CsgOperand left, CsgOperand right, Real thin)

@@ -3,20 +3,22 @@
 namespace rt {
 
 std::size_t memory_bytes(const Shape& shape) {
-    if (const auto* mesh = std::get_if<Mesh>(&shape)) return sizeof(Shape) + memory_bytes(mesh->data());
-    if (const auto* polygon = std::get_if<Polygon>(&shape))
-        return sizeof(Shape) + polygon->vertices().size() * (sizeof(Vec3) + sizeof(Vec2));
-    if (const auto* instance = std::get_if<Instance>(&shape)) return sizeof(Shape) + memory_bytes(instance->base());
-    if (const auto* csg = std::get_if<Csg>(&shape))
-        return sizeof(Shape) + memory_bytes(*csg->left().shape) + memory_bytes(*csg->right().shape);
-    return sizeof(Shape);
+    return sizeof(Shape) +
+           match(
+               shape, [](const Sphere&) -> std::size_t { return 0; }, [](const Triangle&) -> std::size_t { return 0; },
+               [](const Polygon& p) -> std::size_t { return p.vertices().size() * (sizeof(Vec3) + sizeof(Vec2)); },
+               [](const Mesh& m) { return memory_bytes(m.data()); },
+               [](const Instance& in) { return memory_bytes(in.base()); },
+               [](const Cuboid&) -> std::size_t { return 0; },
+               [](const Csg& c) { return memory_bytes(*c.left().shape) + memory_bytes(*c.right().shape); });
 }
 
 bool moves(const Shape& shape) {
-    if (const auto* sphere = std::get_if<Sphere>(&shape)) return sphere->moves();
-    if (const auto* instance = std::get_if<Instance>(&shape)) return moves(instance->base());
-    if (const auto* csg = std::get_if<Csg>(&shape)) return moves(*csg->left().shape) || moves(*csg->right().shape);
-    return false;
+    return match(
+        shape, [](const Sphere& s) { return s.moves(); }, [](const Triangle&) { return false; },
+        [](const Polygon&) { return false; }, [](const Mesh&) { return false; },
+        [](const Instance& in) { return moves(in.base()); }, [](const Cuboid&) { return false; },
+        [](const Csg& c) { return moves(*c.left().shape) || moves(*c.right().shape); });
 }
 
 }  // namespace rt

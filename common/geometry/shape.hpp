@@ -11,6 +11,8 @@
 #include "geometry/sphere.hpp"
 #include "geometry/triangle.hpp"
 
+#include <concepts>
+#include <iterator>
 #include <variant>
 
 namespace rt {
@@ -23,6 +25,7 @@ struct Shape : std::variant<Sphere, Triangle, Polygon, Mesh, Instance, Cuboid, C
 // The kind's name, as scene files and --pick say it.
 inline const char* shape_kind(const Shape& shape) {
     constexpr const char* names[] = {"sphere", "triangle", "polygon", "mesh", "instance", "box", "csg"};
+    static_assert(std::size(names) == std::variant_size_v<Shape::variant>, "a name for every kind of shape");
     return names[shape.index()];
 }
 
@@ -49,7 +52,8 @@ inline bool hit_record(const Sphere& sphere, const Ray& ray, Interval interval, 
     return true;
 }
 
-inline bool hit_record(const Shape& shape, const Ray& ray, Interval interval, SurfaceRef who, HitRecord& rec) {
+template <std::same_as<Shape> S>
+bool hit_record(const S& shape, const Ray& ray, Interval interval, SurfaceRef who, HitRecord& rec) {
     return dispatch(shape, [&](const auto& s) { return hit_record(s, ray, interval, who, rec); });
 }
 
@@ -66,15 +70,19 @@ inline bool occluded(const Sphere& sphere, const Ray& ray, Interval interval) {
     return hit(sphere.moves() ? sphere.at(ray.time) : sphere, ray, interval, h);
 }
 
-inline bool occluded(const Shape& shape, const Ray& ray, Interval interval) {
+template <std::same_as<Shape> S>
+bool occluded(const S& shape, const Ray& ray, Interval interval) {
     return dispatch(shape, [&](const auto& s) { return occluded(s, ray, interval); });
 }
 
 // Whether anything in the shape moves (chapter 18): only then do rays need a time.
 bool moves(const Shape& shape);
 
-inline Box bounding_box(const Shape& shape) {
-    return std::visit([](const auto& s) { return bounding_box(s); }, shape);
+// The whole variant only: a kind without a bounding_box of its own must not compile by
+// converting to a Shape and asking this one again.
+template <std::same_as<Shape> S>
+Box bounding_box(const S& shape) {
+    return dispatch(shape, [](const auto& s) { return bounding_box(s); });
 }
 
 }  // namespace rt

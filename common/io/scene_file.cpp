@@ -215,15 +215,19 @@ Shape read_csg(const Loader& loader, const Fields& f) {
 }
 
 void count_triangles(const Shape& shape, SceneSummary& summary) {
-    if (const auto* mesh = std::get_if<Mesh>(&shape)) {
-        summary.triangles += mesh->data().triangles.size();
-        summary.degenerate_triangles += mesh->dropped_degenerate();
-    } else if (std::holds_alternative<Triangle>(shape)) {
-        summary.triangles += 1;
-    } else if (const auto* csg = std::get_if<Csg>(&shape)) {  // its operands' own, not instances of /shapes
-        count_triangles(*csg->left().shape, summary);
-        count_triangles(*csg->right().shape, summary);
-    }
+    match(
+        shape,
+        [&](const Mesh& mesh) {
+            summary.triangles += mesh.data().triangles.size();
+            summary.degenerate_triangles += mesh.dropped_degenerate();
+        },
+        [&](const Triangle&) { summary.triangles += 1; },
+        [&](const Csg& csg) {  // its operands' own, not instances of /shapes
+            count_triangles(*csg.left().shape, summary);
+            count_triangles(*csg.right().shape, summary);
+        },
+        // An instance's shape is counted once, where /shapes defines it.
+        [](const Instance&) {}, [](const Sphere&) {}, [](const Polygon&) {}, [](const Cuboid&) {});
 }
 
 std::string where(const std::string& text, const std::string& filename, std::size_t offset) {

@@ -86,7 +86,7 @@ Color WhittedIntegrator::trace(const Scene& scene, const Ray& ray, const HitReco
     TraceContext child = context.child(kind, s.interval, weight, why);
     if (!(child.reach > 0)) return Color(0);
     if (child.reach < scene.min_reach) {
-        context.note("a ray that would carry under min_reach (1/1024) of the pixel was not cast");
+        context.note("a ray that would carry under the scene's min_reach of the pixel was not cast");
         return Color(0);
     }
     context.counters.count(kind);
