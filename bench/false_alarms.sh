@@ -9,7 +9,7 @@
 #      sampler the family p is, by Šidák's inequality, at least as large as a uniform number);
 #   2. planted bugs: every sampler bug the tests plant, rendered with the tests' seeds
 #      (101-108): how many pixel-channels fail at the corrected level, and the smallest p.
-# Render settings, seeds and tolerance are read from tests/CMakeLists.txt, so the verdicts are
+# Render settings, seeds and tolerance are read from tools/settings.cmake, so the verdicts are
 # the tests'. Arguments after -- go to rtlab-stat after the tolerance (they win), e.g.
 # `-- --var-renders 0` for the z-test that takes the reference's variance as exact.
 #
@@ -34,11 +34,11 @@ while (($#)); do
     *) echo "usage: bench/false_alarms.sh [--build DIR] [--golden DIR] [--groups G] [--first-seed S] [--no-planted] [-- ARGS]" >&2 && exit 2 ;;
     esac
 done
-cmake_list() { sed -n "s/^set($1 \(.*\))\$/\1/p" "$2"; }
-read -ra render_args <<<"$(cmake_list RTLAB_STAT_ARGS tests/CMakeLists.txt)"
-read -ra tolerance <<<"$(cmake_list RTLAB_STAT_TOLERANCE tests/CMakeLists.txt)"
-read -ra test_seeds <<<"$(cmake_list RTLAB_STAT_SEEDS tests/CMakeLists.txt)"
-read -ra noisy <<<"$(cmake_list RTLAB_NOISY_CHAPTERS CMakeLists.txt)"
+setting() { cmake -DGET="$1" -P tools/settings.cmake; }
+read -ra render_args <<<"$(setting RTLAB_STAT_ARGS)"
+read -ra tolerance <<<"$(setting RTLAB_STAT_TOLERANCE)"
+read -ra test_seeds <<<"$(setting RTLAB_STAT_SEEDS)"
+read -ra noisy <<<"$(setting RTLAB_NOISY_CHAPTERS)"
 stat=$build/bin/rtlab-stat
 work=$(mktemp -d /tmp/rtlab-false-alarms.XXXXXX)
 trap 'rm -rf "$work"' EXIT

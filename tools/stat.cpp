@@ -61,8 +61,8 @@ int main(int argc, char** argv) {
     cli.require_subcommand(1);
     std::string mean_path, var_path, map_path, json_path, average_path, reference_png;
     std::vector<std::string> images, converged, spread;
-    // The defaults are the tests' tolerance (RTLAB_STAT_TOLERANCE in tests/CMakeLists.txt, book
-    // §14.6), so a test run by hand gives the verdict the test suite gives.
+    // The defaults are the tests' tolerance (RTLAB_STAT_TOLERANCE in tools/settings.cmake, book
+    // §14.6), so a test run by hand gives the verdict the test suite gives (stat_defaults checks).
     double alpha = 0.01, floor = 0.004, max_share = 0;
     std::size_t var_renders = 1024;
     CLI::App* make = cli.add_subcommand("reference", "write a reference: the converged mean, one render's variance");

@@ -1,0 +1,14 @@
+# Compiles go through ccache where it is installed (./lab test installs it), for every build
+# of the lab whatever starts it (./lab, tools/grade, a preset by hand): a rebuild, a cleaned
+# build directory or a second copy of the lab then costs no compile.
+#   CCACHE_BASEDIR: paths are hashed relative to the checkout, so another clone hits too.
+#   CCACHE_SLOPPINESS=time_macros: pcg_extras.hpp (included by every file that samples) puts
+#   __DATE__ __TIME__ into a seed the lab never uses; without it, ccache would miss on all
+#   those files.
+# A launcher given on the command line wins, except plain "ccache" (what an older lab put in
+# the cache, and a hand-made build may give): that one gets the two settings too.
+find_program(RTLAB_CCACHE_PROGRAM ccache)
+if(RTLAB_CCACHE_PROGRAM AND (NOT CMAKE_CXX_COMPILER_LAUNCHER OR CMAKE_CXX_COMPILER_LAUNCHER STREQUAL "ccache"))
+    set(CMAKE_CXX_COMPILER_LAUNCHER env CCACHE_BASEDIR=${PROJECT_SOURCE_DIR} CCACHE_SLOPPINESS=time_macros
+        ${RTLAB_CCACHE_PROGRAM})
+endif()
