@@ -95,24 +95,20 @@ Accel::Accel(const SurfaceList& surfaces, AccelKind kind)
           return impl;
       }()) {
     info_.kind = kind;
+    // The two trees built from primitives answer the same four questions.
+    const auto tree = [&](const auto& t) {
+        info_.primitives = t.primitive_count();
+        info_.nodes = t.node_count();
+        info_.bytes = t.memory_bytes();
+        info_.depth = t.depth();
+    };
     match(
-        impl_, [&](const BruteForce& b) { info_.primitives = b.primitive_count(); },
-        [&](const Bvh& b) {
-            info_.primitives = b.primitive_count();
-            info_.nodes = b.node_count();
-            info_.bytes = b.memory_bytes();
-            info_.depth = b.depth();
-        },
+        impl_, [&](const BruteForce& b) { info_.primitives = b.primitive_count(); }, [&](const Bvh& b) { tree(b); },
+        [&](const Bsp& b) { tree(b); },
         [&](const Grid& g) {
             info_.primitives = g.primitive_count();
             info_.nodes = g.cell_count();
             info_.bytes = g.memory_bytes();
-        },
-        [&](const Bsp& t) {
-            info_.primitives = t.primitive_count();
-            info_.nodes = t.node_count();
-            info_.bytes = t.memory_bytes();
-            info_.depth = t.depth();
         },
         [&](const TwoLevelBvh& f) {
             info_.primitives = primitives_of(surfaces).size();

@@ -1,5 +1,7 @@
 #include "accel/bsp.hpp"
 
+#include "accel/tree_depth.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -239,17 +241,11 @@ bool Bsp::occluded(const SurfaceList& surfaces, const Ray& ray, Interval interva
 
 int Bsp::depth() const {
     if (root_ == kNone) return 0;
-    int deepest = 0;
-    std::vector<std::pair<BspRef, int>> stack{{root_, 0}};
-    while (!stack.empty()) {
-        const auto [ref, d] = stack.back();
-        stack.pop_back();
-        deepest = std::max(deepest, d);
-        if (nodes_[ref].leaf()) continue;
-        stack.push_back({nodes_[ref].left, d + 1});
-        stack.push_back({nodes_[ref].right, d + 1});
-    }
-    return deepest;
+    return tree_depth(
+        root_, [&](BspRef ref) { return nodes_[ref].leaf(); },
+        [&](BspRef ref) {
+            return std::pair{nodes_[ref].left, nodes_[ref].right};
+        });
 }
 
 }  // namespace rt

@@ -1,5 +1,7 @@
 #include "accel/course_bvh.hpp"
 
+#include "accel/tree_depth.hpp"
+
 #include "core/flat_bvh.hpp"
 
 #include <algorithm>
@@ -100,17 +102,11 @@ bool Bvh::occluded(const SurfaceList& surfaces, const Ray& ray, Interval interva
 
 int Bvh::depth() const {
     if (root_ == kNone || is_primitive(root_)) return 0;
-    int deepest = 0;
-    std::vector<std::pair<BvhRef, int>> stack{{root_, 0}};
-    while (!stack.empty()) {
-        const auto [ref, d] = stack.back();
-        stack.pop_back();
-        deepest = std::max(deepest, d);
-        if (is_primitive(ref)) continue;
-        stack.push_back({nodes_[ref].left, d + 1});
-        stack.push_back({nodes_[ref].right, d + 1});
-    }
-    return deepest;
+    return tree_depth(
+        root_, [&](BvhRef ref) { return is_primitive(ref); },
+        [&](BvhRef ref) {
+            return std::pair{nodes_[ref].left, nodes_[ref].right};
+        });
 }
 
 }  // namespace rt
