@@ -397,7 +397,13 @@ mesh("face_two_corners", TRI + "f 1 2\n", ["face_two_corners.obj:4", "OBJ face c
 mesh("face_garbage", TRI + "f a b c\n", ["face corner 'a' has no vertex index"])
 mesh("no_faces", TRI, ["no triangles in the file"])
 mesh("empty", "", ["no triangles in the file"])
-mesh("vertex_huge", "v 1e400 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", ["vertex 1", "coordinate must be in"])
+mesh("vertex_huge", "v 1e400 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", ["vertex_huge.obj:1", "'1e400' is not a finite number"])
+mesh("vertex_1e39", "v 1e39 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", ["vertex 1", "coordinate must be in"])
+# tinyobjloader reads a coordinate that is not a number as 0: each is refused at its line.
+for bad in ("nan", "-inf", "abc", "0x1p3", "1e", "1.2.3"):
+    mesh(f"vertex_{bad}", TRI + f"v {bad} 0 0\nf 1 2 4\n", [f"vertex_{bad}.obj:4", f"vertex coordinate '{bad}' is not a finite number"])
+mesh("vertex_two_coordinates", "v 0 0\n" + TRI + "f 2 3 4\n", ["vertex_two_coordinates.obj:1", "vertex has 2 coordinates, not 3"])
+mesh("normal_nan", TRI + "vn nan 0 1\nf 1//1 2//1 3//1\n", ["normal_nan.obj:4", "vertex normal coordinate 'nan' is not a finite number"])
 mesh("all_degenerate", TRI + "v 2 0 0\nf 1 2 4\n", ["every triangle is degenerate"])
 mesh("scaled_past_limit", TRI + "f 1 2 3\n", ["vertex 2", "coordinate must be in"],
      {"scale": 1e8, "translate": [1e8, 0, 0]})

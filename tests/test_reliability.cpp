@@ -155,6 +155,21 @@ TEST_CASE("OBJ: line numbers in messages, faces fanned from their first corner")
                          "mesh two.obj:2: OBJ face corners must be in 3..255, not 2", std::runtime_error);
     CHECK_THROWS_WITH_AS(load_obj_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "zero.obj"),
                          "mesh zero.obj:4: vertex index 0 (OBJ counts vertices from 1)", std::runtime_error);
+    // Coordinates that are not finite numbers, which tinyobjloader would read as 0; numbers
+    // as OBJ files write them load.
+    for (const char* bad : {"nan", "-inf", "inf", "abc", "1e400", "+", ".", "1e+", "1,5", "0x10"})
+        CHECK_THROWS_WITH_AS(
+            load_obj_text(std::string("v 0 0 0\nv 1 0 0\n\nv 0 ") + bad + " 0\nf 1 2 3\n", "bad.obj"),
+            ("mesh bad.obj:4: vertex coordinate '" + std::string(bad) + "' is not a finite number").c_str(),
+            std::runtime_error);
+    CHECK_THROWS_WITH_AS(load_obj_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 nan 1\nf 1//1 2//1 3//1\n", "n.obj"),
+                         "mesh n.obj:4: vertex normal coordinate 'nan' is not a finite number", std::runtime_error);
+    CHECK_THROWS_WITH_AS(load_obj_text("v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n", "two.obj"),
+                         "mesh two.obj:2: vertex has 2 coordinates, not 3", std::runtime_error);
+    const MeshData forms =
+        load_obj_text("v -0 +0 0.\nv 1.5e0 .0 -0e-3\nv 0 1E+0 0 1\nvn 0 0 1\nf 1//1 2//1 3//1\n", "f.obj");
+    CHECK(forms.positions.at(1) == Vec3(Real(1.5), 0, 0));
+    CHECK(forms.positions.at(2) == Vec3(0, 1, 0));
     // A polygon of 255 corners (tinyobjloader's limit): 253 triangles; one more corner is
     // refused, not wrapped round to 0.
     std::string ring, face = "f";
