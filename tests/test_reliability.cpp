@@ -255,6 +255,25 @@ TEST_CASE("the render loop writes only finite pixels and counts the samples it l
     CHECK(r.counters.nonfinite_samples < std::uint64_t(8 * 6 * 2));
     CHECK(r.image.at(0, 5) == Color(0.5f));  // bottom left: every sample finite
 }
+
+TEST_CASE("the average of identical samples is that sample, at the most samples per pixel allowed") {
+    // A float sum of 65536 copies of 0.7 comes out 7e-4 off (the sum's step outgrows the
+    // sample): each pixel must be the background exactly, every channel, bit for bit.
+    Scene scene = load_scene_text(R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0]},
+        "background": [0.6, 0.7, 0.85], "surfaces": [{"type": "sphere", "center": [0, 0, 50], "radius": 1}]})",
+                                  "background.json", ".");
+    REQUIRE(scene.background == Color(0.6f, 0.7f, 0.85f));
+    RenderOptions o;
+    o.width = 2;
+    o.height = 2;
+    o.spp = int(limits::samples_per_pixel.max);
+    const RenderResult r = render(scene, o);
+    for (const Color& c : r.image.pixels) {
+        CHECK(c.r == 0.6f);
+        CHECK(c.g == 0.7f);
+        CHECK(c.b == 0.85f);
+    }
+}
 }  // TEST_SUITE("common")
 
 TEST_SUITE("common") {
