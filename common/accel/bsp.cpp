@@ -191,18 +191,24 @@ bool Bsp::hit_leaf(const SurfaceList& surfaces, const BspNode& leaf, const Ray& 
     return found;
 }
 
-bool Bsp::hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
+bool Bsp::reach(const Ray& ray, Interval& interval) const {
     if (root_ == kNone) return false;
-    // The far end is clipped to the tree's box, padded: the box is made of the primitives'
-    // boxes, so a wall can lie in its face, and a ray that meets it from close by at a
-    // grazing angle has its hit a rounding error past the face about half the time. The near
-    // end is not clipped: the four cases hold for the whole line, and a hit a rounding error
-    // before the box's face must count too.
+    // Clipped to the tree's box grown by the pad: the box is made of the primitives' boxes, so
+    // a wall can lie in its face, and its hit is computed a rounding error in or out of it
+    // (from close by at a grazing angle, about half the time; far from the origin, where that
+    // error is a unit in the last place of the coordinates, on every ray that meets the wall
+    // at the face). The near end is not clipped: the four cases hold for the whole line, and
+    // a hit a rounding error before the box's face must count too.
     Interval inside = interval;
-    if (!clip_to_box(bounds_, ray, inside)) return false;
-    const Real far = std::min(interval.max, inside.max + pad_ / glm::length(ray.direction));
+    const Box grown{bounds_.min - Vec3(pad_), bounds_.max + Vec3(pad_)};
+    if (!clip_to_box(grown, ray, inside)) return false;
+    interval.max = inside.max;
+    return true;
+}
+
+bool Bsp::hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
     HitRecord best = no_hit_before(interval.max);
-    if (!hit_node(surfaces, root_, ray, Interval{interval.min, far}, best)) return false;
+    if (!reach(ray, interval) || !hit_node(surfaces, root_, ray, interval, best)) return false;
     rec = best;
     return true;
 }
@@ -231,10 +237,8 @@ bool Bsp::occluded_node(const SurfaceList& surfaces, BspRef ref, const Ray& ray,
 }
 
 bool Bsp::occluded(const SurfaceList& surfaces, const Ray& ray, Interval interval) const {
-    if (root_ == kNone) return false;
-    Interval inside = interval;
-    if (!clip_to_box(bounds_, ray, inside)) return false;
-    return occluded_node(surfaces, root_, ray, Interval{interval.min, inside.max}, interval);
+    Interval part = interval;
+    return reach(ray, part) && occluded_node(surfaces, root_, ray, part, interval);
 }
 
 int Bsp::depth() const {
