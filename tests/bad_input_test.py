@@ -373,6 +373,25 @@ scene_text("center_minus_1e400", good.replace('"center": [\n    0', '"center": [
 scene_text("fov_1e400", good.replace('"target"', '"fov": 1e400, "target"'), [C + "/fov", "too large to hold"])
 scene_text("file_too_large", good + " " * (17 << 20), ["scene file size must be in 0..16777216 bytes, not"])
 
+# The work a scene may ask of the search structures and of CSG (limits.hpp), refused when
+# the scene is read or its structure built, before any rendering: 10^4 balls in one place
+# would list each in every cell of a grid (800 MB); 32 instances of a 1024-ball CSG shape
+# under one CSG would test 32768 balls a ray. The largest CSG allowed loads and renders.
+doc = copy.deepcopy(BASE)
+doc["surfaces"] = [dict(BALL, material="m") for _ in range(10000)]
+(inputs / "grid_pile.json").write_text(json.dumps(doc))
+start = time.monotonic()
+run("grid_pile", [bin_dir / "ch11", "--scene", inputs / "grid_pile.json", "--accel", "grid", "--width", "8", "--height",
+                  "6", "-o", out / "image.png"], 2, ["grid entries must be in 0..67108864", "--accel fast"])
+check(time.monotonic() - start < 10, f"grid_pile: refused after {time.monotonic() - start:.1f} s")
+BALLS = {"type": "csg", "op": "union", "operands": [dict(BALL, center=[k / 1024, 0, 0]) for k in range(1024)]}
+for copies, code, words in ((16, 0, []), (32, 2, ["/surfaces/0", "CSG leaves must be in 2..16384"])):
+    doc = copy.deepcopy(BASE)
+    doc["shapes"] = {"balls": BALLS}
+    doc["surfaces"] = [{"type": "csg", "op": "union", "material": "m", "operands": [
+        {"type": "instance", "shape": "balls", "transform": [{"translate": [0, k, 0]}]} for k in range(copies)]}]
+    scene_text(f"csg_leaves_{copies}", json.dumps(doc), words, code)
+
 # --- meshes (OBJ files, through a scene) -----------------------------------------------------
 
 

@@ -1,5 +1,7 @@
 #include "accel/bsp.hpp"
 
+#include "core/limits.hpp"
+
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -8,14 +10,6 @@
 #include <stdexcept>
 
 namespace rt {
-
-namespace {
-
-// A build may list a primitive in many leaves; past this many entries in all it is
-// refused rather than allowed to eat the machine (a pile of long primitives all crossing).
-constexpr std::size_t kMaxEntries = std::size_t(1) << 28;
-
-}  // namespace
 
 BspBuilder::BspBuilder(std::vector<Box> boxes, Real pad, int max_depth, std::size_t leaf_size)
     : boxes_(std::move(boxes)), pad_(pad), max_depth_(max_depth), leaf_size_(leaf_size) {}
@@ -31,9 +25,12 @@ void BspBuilder::sort(std::span<const std::uint32_t> items, int axis, Real split
 }
 
 BspRef BspBuilder::add_leaf(std::span<const std::uint32_t> items) {
-    if (items_.size() + items.size() > kMaxEntries)
-        throw std::invalid_argument(
-            "bsp: its leaves would list over 2^28 primitives in all (too many cross its planes); use --accel fast");
+    // A build may list a primitive in many leaves (a pile of long primitives all crossing):
+    // past the limit it is refused rather than allowed to eat the machine.
+    if (!limits::contains(limits::bsp_entries, double(items_.size() + items.size())))
+        throw std::invalid_argument("bsp: too many primitives cross its planes (" +
+                                    std::string(limits::bsp_entries.name) + " " +
+                                    limits::describe(limits::bsp_entries) + "); use a BVH (--accel fast)");
     BspNode n;
     n.left = std::uint32_t(items_.size());
     items_.insert(items_.end(), items.begin(), items.end());

@@ -1,6 +1,7 @@
 #include "accel/grid.hpp"
 
 #include "core/flat_bvh.hpp"
+#include "core/limits.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -65,9 +66,10 @@ Grid::Grid(const SurfaceList& surfaces, Real density) : primitives_(primitives_o
     for (const Box& b : boxes) {
         cell_range(b, lo, hi);
         total += std::size_t(hi[0] - lo[0] + 1) * std::size_t(hi[1] - lo[1] + 1) * std::size_t(hi[2] - lo[2] + 1);
-        if (total > (std::size_t(1) << 30))
-            throw std::invalid_argument(
-                "grid: its primitives overlap over 2^30 cells in all; use a BVH (--accel fast)");
+        if (!limits::contains(limits::grid_entries, double(total)))  // stops counting there: bounded work
+            throw std::invalid_argument("grid: its primitives overlap too many cells (" +
+                                        std::string(limits::grid_entries.name) + " " +
+                                        limits::describe(limits::grid_entries) + "); use a BVH (--accel fast)");
         for (c[2] = lo[2]; c[2] <= hi[2]; ++c[2])
             for (c[1] = lo[1]; c[1] <= hi[1]; ++c[1])
                 for (c[0] = lo[0]; c[0] <= hi[0]; ++c[0]) ++count[index(c) + 1];
