@@ -373,6 +373,25 @@ scene_text("center_minus_1e400", good.replace('"center": [\n    0', '"center": [
 scene_text("fov_1e400", good.replace('"target"', '"fov": 1e400, "target"'), [C + "/fov", "too large to hold"])
 scene_text("file_too_large", good + " " * (17 << 20), ["scene file size must be in 0..16777216 bytes, not"])
 
+# The work a scene may ask of the search structures and of CSG (limits.hpp), refused when
+# the scene is read or its structure built, before any rendering: 10^4 balls in one place
+# would list each in every cell of a grid (800 MB); 32 instances of a 1024-ball CSG shape
+# under one CSG would test 32768 balls a ray. The largest CSG allowed loads and renders.
+doc = copy.deepcopy(BASE)
+doc["surfaces"] = [dict(BALL, material="m") for _ in range(10000)]
+(inputs / "grid_pile.json").write_text(json.dumps(doc))
+start = time.monotonic()
+run("grid_pile", [bin_dir / "ch11", "--scene", inputs / "grid_pile.json", "--accel", "grid", "--width", "8", "--height",
+                  "6", "-o", out / "image.png"], 2, ["grid entries must be in 0..67108864", "--accel fast"])
+check(time.monotonic() - start < 10, f"grid_pile: refused after {time.monotonic() - start:.1f} s")
+BALLS = {"type": "csg", "op": "union", "operands": [dict(BALL, center=[k / 1024, 0, 0]) for k in range(1024)]}
+for copies, code, words in ((16, 0, []), (32, 2, ["/surfaces/0", "CSG leaves must be in 2..16384"])):
+    doc = copy.deepcopy(BASE)
+    doc["shapes"] = {"balls": BALLS}
+    doc["surfaces"] = [{"type": "csg", "op": "union", "material": "m", "operands": [
+        {"type": "instance", "shape": "balls", "transform": [{"translate": [0, k, 0]}]} for k in range(copies)]}]
+    scene_text(f"csg_leaves_{copies}", json.dumps(doc), words, code)
+
 # --- meshes (OBJ files, through a scene) -----------------------------------------------------
 
 
@@ -397,7 +416,13 @@ mesh("face_two_corners", TRI + "f 1 2\n", ["face_two_corners.obj:4", "OBJ face c
 mesh("face_garbage", TRI + "f a b c\n", ["face corner 'a' has no vertex index"])
 mesh("no_faces", TRI, ["no triangles in the file"])
 mesh("empty", "", ["no triangles in the file"])
-mesh("vertex_huge", "v 1e400 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", ["vertex 1", "coordinate must be in"])
+mesh("vertex_huge", "v 1e400 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", ["vertex_huge.obj:1", "'1e400' is not a finite number"])
+mesh("vertex_1e39", "v 1e39 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n", ["vertex 1", "coordinate must be in"])
+# tinyobjloader reads a coordinate that is not a number as 0: each is refused at its line.
+for bad in ("nan", "-inf", "abc", "0x1p3", "1e", "1.2.3"):
+    mesh(f"vertex_{bad}", TRI + f"v {bad} 0 0\nf 1 2 4\n", [f"vertex_{bad}.obj:4", f"vertex coordinate '{bad}' is not a finite number"])
+mesh("vertex_two_coordinates", "v 0 0\n" + TRI + "f 2 3 4\n", ["vertex_two_coordinates.obj:1", "vertex has 2 coordinates, not 3"])
+mesh("normal_nan", TRI + "vn nan 0 1\nf 1//1 2//1 3//1\n", ["normal_nan.obj:4", "vertex normal coordinate 'nan' is not a finite number"])
 mesh("all_degenerate", TRI + "v 2 0 0\nf 1 2 4\n", ["every triangle is degenerate"])
 mesh("scaled_past_limit", TRI + "f 1 2 3\n", ["vertex 2", "coordinate must be in"],
      {"scale": 1e8, "translate": [1e8, 0, 0]})

@@ -91,13 +91,9 @@ bool four_cases(const Bsp& bsp, const SurfaceList& list, BspRef ref, const Ray& 
 // What Bsp::hit does around the search, with four_cases for hit_node.
 Search expected(const Bsp& bsp, const SurfaceList& list, const Ray& ray, Interval interval = {}) {
     Search s;
-    Interval inside = interval;
     traversal_tally = {};
-    if (clip_to_box(bsp.bounding_box(), ray, inside)) {
-        const Real far = std::min(interval.max, inside.max + bsp.pad() / glm::length(ray.direction));
-        s.rec = no_hit_before(interval.max);
-        s.hit = four_cases(bsp, list, bsp.root(), ray, Interval{interval.min, far}, s.rec);
-    }
+    s.rec = no_hit_before(interval.max);
+    if (bsp.reach(ray, interval)) s.hit = four_cases(bsp, list, bsp.root(), ray, interval, s.rec);
     s.nodes = traversal_tally.nodes;
     s.items = traversal_tally.items;
     return s;

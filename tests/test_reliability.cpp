@@ -155,6 +155,21 @@ TEST_CASE("OBJ: line numbers in messages, faces fanned from their first corner")
                          "mesh two.obj:2: OBJ face corners must be in 3..255, not 2", std::runtime_error);
     CHECK_THROWS_WITH_AS(load_obj_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nf 0 1 2\n", "zero.obj"),
                          "mesh zero.obj:4: vertex index 0 (OBJ counts vertices from 1)", std::runtime_error);
+    // Coordinates that are not finite numbers, which tinyobjloader would read as 0; numbers
+    // as OBJ files write them load.
+    for (const char* bad : {"nan", "-inf", "inf", "abc", "1e400", "+", ".", "1e+", "1,5", "0x10"})
+        CHECK_THROWS_WITH_AS(
+            load_obj_text(std::string("v 0 0 0\nv 1 0 0\n\nv 0 ") + bad + " 0\nf 1 2 3\n", "bad.obj"),
+            ("mesh bad.obj:4: vertex coordinate '" + std::string(bad) + "' is not a finite number").c_str(),
+            std::runtime_error);
+    CHECK_THROWS_WITH_AS(load_obj_text("v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 nan 1\nf 1//1 2//1 3//1\n", "n.obj"),
+                         "mesh n.obj:4: vertex normal coordinate 'nan' is not a finite number", std::runtime_error);
+    CHECK_THROWS_WITH_AS(load_obj_text("v 0 0 0\nv 1 0\nv 0 1 0\nf 1 2 3\n", "two.obj"),
+                         "mesh two.obj:2: vertex has 2 coordinates, not 3", std::runtime_error);
+    const MeshData forms =
+        load_obj_text("v -0 +0 0.\nv 1.5e0 .0 -0e-3\nv 0 1E+0 0 1\nvn 0 0 1\nf 1//1 2//1 3//1\n", "f.obj");
+    CHECK(forms.positions.at(1) == Vec3(Real(1.5), 0, 0));
+    CHECK(forms.positions.at(2) == Vec3(0, 1, 0));
     // A polygon of 255 corners (tinyobjloader's limit): 253 triangles; one more corner is
     // refused, not wrapped round to 0.
     std::string ring, face = "f";
@@ -239,6 +254,25 @@ TEST_CASE("the render loop writes only finite pixels and counts the samples it l
     CHECK(r.counters.nonfinite_samples > 0);
     CHECK(r.counters.nonfinite_samples < std::uint64_t(8 * 6 * 2));
     CHECK(r.image.at(0, 5) == Color(0.5f));  // bottom left: every sample finite
+}
+
+TEST_CASE("the average of identical samples is that sample, at the most samples per pixel allowed") {
+    // A float sum of 65536 copies of 0.7 comes out 7e-4 off (the sum's step outgrows the
+    // sample): each pixel must be the background exactly, every channel, bit for bit.
+    Scene scene = load_scene_text(R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0]},
+        "background": [0.6, 0.7, 0.85], "surfaces": [{"type": "sphere", "center": [0, 0, 50], "radius": 1}]})",
+                                  "background.json", ".");
+    REQUIRE(scene.background == Color(0.6f, 0.7f, 0.85f));
+    RenderOptions o;
+    o.width = 2;
+    o.height = 2;
+    o.spp = int(limits::samples_per_pixel.max);
+    const RenderResult r = render(scene, o);
+    for (const Color& c : r.image.pixels) {
+        CHECK(c.r == 0.6f);
+        CHECK(c.g == 0.7f);
+        CHECK(c.b == 0.85f);
+    }
 }
 }  // TEST_SUITE("common")
 

@@ -1,6 +1,7 @@
 #include "accel/bsp.hpp"
 
 #include "accel/tree_depth.hpp"
+#include "core/limits.hpp"
 
 #include <algorithm>
 #include <array>
@@ -10,14 +11,6 @@
 #include <stdexcept>
 
 namespace rt {
-
-namespace {
-
-// A build may list a primitive in many leaves; past this many entries in all it is
-// refused rather than allowed to eat the machine (a pile of long primitives all crossing).
-constexpr std::size_t kMaxEntries = std::size_t(1) << 28;
-
-}  // namespace
 
 BspBuilder::BspBuilder(std::vector<Box> boxes, Real pad, int max_depth, std::size_t leaf_size)
     : boxes_(std::move(boxes)), pad_(pad), max_depth_(max_depth), leaf_size_(leaf_size) {}
@@ -33,9 +26,12 @@ void BspBuilder::sort(std::span<const std::uint32_t> items, int axis, Real split
 }
 
 BspRef BspBuilder::add_leaf(std::span<const std::uint32_t> items) {
-    if (items_.size() + items.size() > kMaxEntries)
-        throw std::invalid_argument(
-            "bsp: its leaves would list over 2^28 primitives in all (too many cross its planes); use --accel fast");
+    // A build may list a primitive in many leaves (a pile of long primitives all crossing):
+    // past the limit it is refused rather than allowed to eat the machine.
+    if (!limits::contains(limits::bsp_entries, double(items_.size() + items.size())))
+        throw std::invalid_argument("bsp: too many primitives cross its planes (" +
+                                    std::string(limits::bsp_entries.name) + " " +
+                                    limits::describe(limits::bsp_entries) + "); use a BVH (--accel fast)");
     BspNode n;
     n.left = std::uint32_t(items_.size());
     items_.insert(items_.end(), items.begin(), items.end());
@@ -193,18 +189,24 @@ bool Bsp::hit_leaf(const SurfaceList& surfaces, const BspNode& leaf, const Ray& 
     return found;
 }
 
-bool Bsp::hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
+bool Bsp::reach(const Ray& ray, Interval& interval) const {
     if (root_ == kNone) return false;
-    // The far end is clipped to the tree's box, padded: the box is made of the primitives'
-    // boxes, so a wall can lie in its face, and a ray that meets it from close by at a
-    // grazing angle has its hit a rounding error past the face about half the time. The near
-    // end is not clipped: the four cases hold for the whole line, and a hit a rounding error
-    // before the box's face must count too.
+    // Clipped to the tree's box grown by the pad: the box is made of the primitives' boxes, so
+    // a wall can lie in its face, and its hit is computed a rounding error in or out of it
+    // (from close by at a grazing angle, about half the time; far from the origin, where that
+    // error is a unit in the last place of the coordinates, on every ray that meets the wall
+    // at the face). The near end is not clipped: the four cases hold for the whole line, and
+    // a hit a rounding error before the box's face must count too.
     Interval inside = interval;
-    if (!clip_to_box(bounds_, ray, inside)) return false;
-    const Real far = std::min(interval.max, inside.max + pad_ / glm::length(ray.direction));
+    const Box grown{bounds_.min - Vec3(pad_), bounds_.max + Vec3(pad_)};
+    if (!clip_to_box(grown, ray, inside)) return false;
+    interval.max = inside.max;
+    return true;
+}
+
+bool Bsp::hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
     HitRecord best = no_hit_before(interval.max);
-    if (!hit_node(surfaces, root_, ray, Interval{interval.min, far}, best)) return false;
+    if (!reach(ray, interval) || !hit_node(surfaces, root_, ray, interval, best)) return false;
     rec = best;
     return true;
 }
@@ -233,10 +235,8 @@ bool Bsp::occluded_node(const SurfaceList& surfaces, BspRef ref, const Ray& ray,
 }
 
 bool Bsp::occluded(const SurfaceList& surfaces, const Ray& ray, Interval interval) const {
-    if (root_ == kNone) return false;
-    Interval inside = interval;
-    if (!clip_to_box(bounds_, ray, inside)) return false;
-    return occluded_node(surfaces, root_, ray, Interval{interval.min, inside.max}, interval);
+    Interval part = interval;
+    return reach(ray, part) && occluded_node(surfaces, root_, ray, part, interval);
 }
 
 int Bsp::depth() const {

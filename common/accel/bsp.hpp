@@ -94,6 +94,9 @@ public:
     bool hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const;
     bool occluded(const SurfaceList& surfaces, const Ray& ray, Interval interval) const;
     Box bounding_box() const { return bounds_; }
+    // The part of the interval the tree is searched over: its end clipped to the tree's box
+    // grown by the pad, its start kept; false if the ray misses that box (or the tree is empty).
+    bool reach(const Ray& ray, Interval& interval) const;
 
     // Exercise 12.1: the course's four cases. Searches the subtree `ref` for the closest hit
     // in the interval (the part of the ray the search has reached this node with), keeping

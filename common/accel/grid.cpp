@@ -1,9 +1,11 @@
 #include "accel/grid.hpp"
 
 #include "core/flat_bvh.hpp"
+#include "core/limits.hpp"
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace rt {
@@ -20,14 +22,18 @@ Grid::Grid(const SurfaceList& surfaces, Real density) : primitives_(primitives_o
         return;
     }
     // Cells about as long as wide, about `density` of them per primitive. An axis the scene
-    // is flat along still gets a thickness (a thousandth of the longest side).
+    // is flat along still gets a thickness (a thousandth of the longest side), and at least
+    // one step of the numbers each way: far from the origin the thickness can be below
+    // their step (float at 2e6: 0.25), and a box of no thickness has cells of no volume.
     const Vec3 extent = bounds_.max - bounds_.min;
     const Real longest = std::max(extent.x, std::max(extent.y, extent.z));
     const Real floor_side = longest > 0 ? longest * Real(1e-3) : Real(1);
     for (int a = 0; a < 3; ++a)
         if (extent[a] < floor_side) {
-            bounds_.min[a] -= (floor_side - extent[a]) / 2;
-            bounds_.max[a] += (floor_side - extent[a]) / 2;
+            const Real lo = bounds_.min[a] - (floor_side - extent[a]) / 2;
+            const Real hi = bounds_.max[a] + (floor_side - extent[a]) / 2;
+            bounds_.min[a] = std::min(lo, std::nextafter(bounds_.min[a], -kInfinity));
+            bounds_.max[a] = std::max(hi, std::nextafter(bounds_.max[a], kInfinity));
         }
     const Vec3 e = bounds_.max - bounds_.min;
     const double k =
@@ -36,7 +42,12 @@ Grid::Grid(const SurfaceList& surfaces, Real density) : primitives_(primitives_o
         n_[a] = int(std::clamp(std::round(double(e[a]) * k), 1.0, 256.0));
         cell_size_[a] = e[a] / Real(n_[a]);
     }
-    pad_ = Real(1e-4) * std::min(cell_size_.x, std::min(cell_size_.y, cell_size_.z));
+    // The pad: a ten-thousandth of a cell, and never less than the rounding in where a hit is
+    // computed, which grows with the coordinates (16 units in the last place of the largest):
+    // far from the origin, in float, that decides (at 1e6: 2 units of 1/16).
+    const Vec3 reach = glm::max(glm::abs(bounds_.min), glm::abs(bounds_.max));
+    rounding_ = Real(16) * std::numeric_limits<Real>::epsilon() * std::max({reach.x, reach.y, reach.z});
+    pad_ = std::max(Real(1e-4) * std::min(cell_size_.x, std::min(cell_size_.y, cell_size_.z)), rounding_);
 
     // Every primitive goes into every cell its box (grown by twice the pad) overlaps: two
     // passes, counting and then filling, so the lists sit in one array.
@@ -55,9 +66,10 @@ Grid::Grid(const SurfaceList& surfaces, Real density) : primitives_(primitives_o
     for (const Box& b : boxes) {
         cell_range(b, lo, hi);
         total += std::size_t(hi[0] - lo[0] + 1) * std::size_t(hi[1] - lo[1] + 1) * std::size_t(hi[2] - lo[2] + 1);
-        if (total > (std::size_t(1) << 30))
-            throw std::invalid_argument(
-                "grid: its primitives overlap over 2^30 cells in all; use a BVH (--accel fast)");
+        if (!limits::contains(limits::grid_entries, double(total)))  // stops counting there: bounded work
+            throw std::invalid_argument("grid: its primitives overlap too many cells (" +
+                                        std::string(limits::grid_entries.name) + " " +
+                                        limits::describe(limits::grid_entries) + "); use a BVH (--accel fast)");
         for (c[2] = lo[2]; c[2] <= hi[2]; ++c[2])
             for (c[1] = lo[1]; c[1] <= hi[1]; ++c[1])
                 for (c[0] = lo[0]; c[0] <= hi[0]; ++c[0]) ++count[index(c) + 1];
@@ -75,7 +87,14 @@ Grid::Grid(const SurfaceList& surfaces, Real density) : primitives_(primitives_o
 }
 
 bool Grid::clip(const Ray& ray, Interval& interval) const {
-    return !bounds_.empty() && clip_to_box(bounds_, ray, interval);
+    if (bounds_.empty()) return false;
+    if (clip_to_box(bounds_, ray, interval)) return true;
+    // A ray that misses the box by a rounding error may still hit a wall lying in its face:
+    // that hit is computed a rounding error in or out, and far from the origin that error is
+    // a unit in the last place of the coordinates. Such a ray is clipped to the box grown by
+    // the rounding; start() clamps its entry point into the nearest cell.
+    const Box grown{bounds_.min - Vec3(rounding_), bounds_.max + Vec3(rounding_)};
+    return clip_to_box(grown, ray, interval);
 }
 
 Real Grid::cell_exit(const Ray& ray, const GridWalk& walk) const {

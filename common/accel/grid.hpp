@@ -49,6 +49,8 @@ public:
     // first. False when the ray leaves the grid or its interval ends before that cell.
     bool next(const Ray& ray, GridWalk& walk) const;
     // Shrinks the interval to where the ray is inside the grid's box; false if it is empty.
+    // A ray that misses the box by no more than the rounding in a hit's coordinates is
+    // clipped to the box grown by that much.
     bool clip(const Ray& ray, Interval& interval) const;
     // The coordinate of plane k (0..resolution) along an axis: min + k * cell size, and the
     // box's own face exactly for the last (min + n * (size / n) may round to a hair inside it,
@@ -86,6 +88,7 @@ private:
     std::array<int, 3> n_{1, 1, 1};
     Vec3 cell_size_{1};
     Real pad_ = 0;                      // in space: how far past a plane a cell's primitives reach
+    Real rounding_ = 0;                 // in space: the rounding in a hit's coordinates (at most pad_)
     std::vector<std::uint32_t> first_;  // cell c lists items_[first_[c] .. first_[c + 1])
     std::vector<std::uint32_t> items_;  // primitive numbers
 };

@@ -24,6 +24,11 @@ inline constexpr Range samples_per_pixel{"samples per pixel", 1, 65536, "",
                                          "/properties/antialiasing/properties/samples"};
 inline constexpr Range image_samples{"samples per image", 1, 4294967296.0, "width x height x spp", ""};
 inline constexpr Range threads{"threads", 0, 1024, "", ""};
+// The search structures list a primitive in every cell or leaf it reaches; these bound the
+// lists' memory (4 bytes an entry), before they are allocated: 10^4 balls in one place
+// would list each in all 2 x 10^4 cells of a grid, 800 MB.
+inline constexpr Range grid_entries{"grid entries", 0, 1 << 26, "(primitives listed, summed over the cells)", ""};
+inline constexpr Range bsp_entries{"BSP entries", 0, 1 << 28, "(primitives listed, summed over the leaves)", ""};
 // @book-end
 
 // True if `value` is in the range (a NaN never is).

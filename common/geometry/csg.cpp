@@ -1,5 +1,6 @@
 #include "geometry/csg.hpp"
 
+#include "geometry/limits.hpp"
 #include "geometry/shape.hpp"
 
 #include <algorithm>
@@ -215,6 +216,10 @@ Csg::Csg(CsgOp op, CsgOperand left, CsgOperand right, Real thin)
     thin_ = thin < 0 ? default_thin(box_) : thin;
     left_leaves_ = leaf_count(*left_.shape);
     right_leaves_ = leaf_count(*right_.shape);
+    // Checked at every node, so the count (never over the limit below) cannot wrap round.
+    if (!limits::contains(limits::csg_leaves, double(left_leaves_) + double(right_leaves_)))
+        throw std::invalid_argument("csg: " +
+                                    limits::refuse(limits::csg_leaves, double(left_leaves_) + double(right_leaves_)));
 }
 
 std::string Csg::describe(std::uint32_t part, bool subtracted) const {

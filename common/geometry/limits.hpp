@@ -40,6 +40,10 @@ inline constexpr Range soup_count{"soup triangles", 1, 1000000, "", "/$defs/surf
 inline constexpr Range soup_seed{"soup seed", 0, 2147483647, "", "/$defs/surface/oneOf/7/properties/seed"};
 inline constexpr Range csg_operands{"CSG operands", 2, 1024, "", "/$defs/surface/oneOf/10/properties/operands"};
 inline constexpr Range csg_thin{"CSG thin", 0, 1e8, "", "/$defs/surface/oneOf/10/properties/thin"};
+// A ray through a CSG object computes the spans of every shape under it, through shared
+// shapes too: 1024 instances of a 1024-ball shape would be 10^6 sphere tests a ray.
+inline constexpr Range csg_leaves{"CSG leaves", 2, 16384, "(shapes under one CSG object, counted through instances)",
+                                  ""};
 // Meshes.
 inline constexpr Range obj_face_corners{"OBJ face corners", 3, 255, "", ""};  // tinyobjloader keeps a byte
 inline constexpr Range mesh_vertices{"mesh vertices", 3, 1 << 25, "", ""};
@@ -67,6 +71,7 @@ inline constexpr Range all[] = {coordinate,
                                 soup_seed,
                                 csg_operands,
                                 csg_thin,
+                                csg_leaves,
                                 json_depth,
                                 scene_file_bytes,
                                 obj_file_bytes,
@@ -78,6 +83,8 @@ inline constexpr Range all[] = {coordinate,
                                 image_pixels,
                                 samples_per_pixel,
                                 image_samples,
-                                threads};
+                                threads,
+                                grid_entries,
+                                bsp_entries};
 
 }  // namespace rt::limits

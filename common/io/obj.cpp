@@ -7,6 +7,8 @@
 #include <tiny_obj_loader.h>
 
 #include <cctype>
+#include <charconv>
+#include <cmath>
 #include <sstream>
 #include <stdexcept>
 
@@ -19,9 +21,47 @@ namespace {
         one_line("mesh " + name + (line ? ":" + std::to_string(line) : std::string()) + ": " + message));
 }
 
+// A coordinate as OBJ files write it (a sign, digits with an optional point, an optional
+// exponent) that is finite in double. tinyobjloader reads anything else as 0 ("nan", "inf",
+// "abc", "0x1p3") and 1e400 as infinity, without a word.
+bool finite_number(const std::string& token) {
+    std::size_t k = token[0] == '+' || token[0] == '-' ? 1 : 0;
+    const std::size_t start = token[0] == '+' ? 1 : 0;  // from_chars takes a '-', not a '+'
+    const auto digits = [&] {
+        const std::size_t from = k;
+        while (k < token.size() && std::isdigit(static_cast<unsigned char>(token[k]))) ++k;
+        return k - from;
+    };
+    std::size_t mantissa = digits();
+    if (k < token.size() && token[k] == '.') ++k, mantissa += digits();
+    if (mantissa == 0) return false;
+    if (k < token.size() && (token[k] == 'e' || token[k] == 'E')) {
+        ++k;
+        if (k < token.size() && (token[k] == '+' || token[k] == '-')) ++k;
+        if (digits() == 0) return false;
+    }
+    if (k != token.size()) return false;
+    double value = 0;
+    const auto [end, error] = std::from_chars(token.data() + start, token.data() + token.size(), value);
+    return error == std::errc() && end == token.data() + token.size() && std::isfinite(value);
+}
+
+// The three coordinates of a "v" or "vn" line (what follows them, a w or a colour, is not
+// read): each a finite number.
+void check_coordinates(std::istringstream& fields, const std::string& name, std::size_t line, const char* what) {
+    std::string token;
+    for (int k = 0; k < 3; ++k) {
+        if (!(fields >> token) || token[0] == '#')
+            fail(name, line, std::string(what) + " has " + std::to_string(k) + " coordinates, not 3");
+        if (!finite_number(token))
+            fail(name, line, std::string(what) + " coordinate '" + token.substr(0, 40) + "' is not a finite number");
+    }
+}
+
 // One pass over the text before tinyobjloader sees it, for what the loader cannot report:
-// it keeps face indices in an int (99999999999 wraps round) and gives no line numbers. Also
-// enforces the count limits before any memory is spent on them.
+// it keeps face indices in an int (99999999999 wraps round), reads a coordinate that is not
+// a number as 0, and gives no line numbers. Also enforces the count limits before any
+// memory is spent on them.
 void check_counts_and_indices(const std::string& text, const std::string& name) {
     std::istringstream in(text);
     std::string line;
@@ -32,11 +72,19 @@ void check_counts_and_indices(const std::string& text, const std::string& name) 
     while (std::getline(in, line)) {
         ++number;
         std::size_t i = line.find_first_not_of(" \t");
+        if (i != std::string::npos && line.compare(i, 2, "vn") == 0 && i + 2 < line.size() &&
+            std::isspace(static_cast<unsigned char>(line[i + 2]))) {
+            std::istringstream fields(line.substr(i + 2));
+            check_coordinates(fields, name, number, "vertex normal");
+            continue;
+        }
         if (i == std::string::npos || i + 1 >= line.size() || !std::isspace(static_cast<unsigned char>(line[i + 1])))
             continue;
         if (line[i] == 'v') {
             if (++vertices > limits::mesh_vertices.max)
                 fail(name, number, limits::refuse(limits::mesh_vertices, vertices));
+            std::istringstream fields(line.substr(i + 1));
+            check_coordinates(fields, name, number, "vertex");
             continue;
         }
         if (line[i] != 'f') continue;
