@@ -234,13 +234,14 @@ scene("aperture_negative", {"/camera/aperture": -0.1}, "/camera/aperture", "aper
 scene("aperture_orthographic", {"/camera/projection": "orthographic", "/camera/aperture": 0.2},
       "a lens (aperture > 0) needs a perspective camera")
 scene("lens_unknown", {"/camera/aperture": 0.2, "/camera/lens": "hexagon"}, "/camera/lens",
-      "must be \"square\" or \"disk\"")
+      "unknown lens \"hexagon\" (expected square or disk)")
 scene("lens_without_aperture", {"/camera/lens": "disk"}, "/camera/lens", "a lens needs an aperture > 0")
 scene("focus_zero", {"/camera/aperture": 0.2, "/camera/focus_distance": 0}, "/camera/focus_distance", "length must be in")
 scene("shutter_backwards", {"/camera/shutter": [0.6, 0.2]}, "/camera/shutter", "closes before it opens")
-scene("shutter_past_one", {"/camera/shutter": [0, 1.5]}, "/camera/shutter", "shutter time must be in 0..1")
-scene("shutter_one_number", {"/camera/shutter": 0.5}, "/camera/shutter", "must be [open, close]")
-scene("shutter_text", {"/camera/shutter": ["open", 1]}, "/camera/shutter", "must be [open, close]")
+scene("shutter_past_one", {"/camera/shutter": [0, 1.5]}, "/camera/shutter/1", "shutter time must be in 0..1")
+scene("shutter_one_number", {"/camera/shutter": 0.5}, "/camera/shutter: must be an array of 2 numbers")
+scene("shutter_three_numbers", {"/camera/shutter": [0, 0.5, 1]}, "/camera/shutter: must be an array of 2 numbers")
+scene("shutter_text", {"/camera/shutter": ["open", 1]}, "/camera/shutter/0: must be a number")
 scene("glossy_without_mirror", {"/materials/m/glossy": 0.2}, "/materials/m/glossy", "only a mirror")
 scene("glossy_huge", {"/materials/m/mirror": [1, 1, 1], "/materials/m/glossy": 40}, "/materials/m/glossy",
       "glossy width must be in 0..16")
@@ -272,7 +273,8 @@ scene("eye_very_far", {C + "/eye": [1e200, 0, 0]}, C + "/eye/0", "coordinate mus
 scene("fov_zero", {C + "/fov": 0}, C + "/fov", "field of view must be in 0.001..179.9 degrees")
 scene("fov_180", {C + "/fov": 180}, "field of view")
 scene("fov_negative", {C + "/fov": -10}, "field of view")
-scene("projection_unknown", {C + "/projection": "fisheye"}, "must be \"perspective\" or \"orthographic\"")
+scene("projection_unknown", {C + "/projection": "fisheye"}, C + "/projection",
+      "unknown projection \"fisheye\" (expected orthographic or perspective)")
 scene("window_height_zero", {C + "/projection": "orthographic", C + "/window_height": 0}, "length must be in")
 scene("focal_distance_negative", {C + "/focal_distance": -1}, C + "/focal_distance", "length")
 scene("camera_unknown_key", {C + "/zoom": 1}, "unknown key 'zoom'")
