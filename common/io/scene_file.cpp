@@ -50,9 +50,9 @@ Camera read_camera(const Fields& f) {
 
 Light read_light(const Fields& f) {
     const std::string type = f.text("type");
-    for (const LightType& t : light_types()) {
-        if (type != t.name) continue;
-        Light light = t.read(f);
+    for (const LightType* t : light_types()) {
+        if (type != t->name) continue;
+        Light light = t->read(f);
         light.color = f.color("color", limits::radiance, light.color);
         f.done();
         return light;
@@ -92,10 +92,10 @@ Shape read_csg(const Loader& loader, const Fields& f);
 Shape read_shape(const Loader& loader, const Fields& f) {
     const std::string type = f.text("type");
     if (type == "csg") return read_csg(loader, f);
-    for (const SurfaceType& t : surface_types()) {
-        if (type != t.name) continue;
+    for (const SurfaceType* t : surface_types()) {
+        if (type != t->name) continue;
         try {
-            Shape shape = t.read(f);
+            Shape shape = t->read(f);
             if (f.has("smooth")) {
                 const Mesh* mesh = std::get_if<Mesh>(&shape);
                 if (!mesh)
