@@ -54,8 +54,12 @@ void Fields::done() const {
     asked_->done = true;
     for (const auto& [key, value] : object_.items()) {
         if (std::find(asked_->keys.begin(), asked_->keys.end(), key) != asked_->keys.end()) continue;
+        // Sorted: the order keys were asked in can follow the order a compiler evaluates
+        // function arguments in, and a message should not.
+        std::vector<std::string> keys = asked_->keys;
+        std::sort(keys.begin(), keys.end());
         std::string list;
-        for (const std::string& a : asked_->keys) list += (list.empty() ? "" : ", ") + a;
+        for (const std::string& a : keys) list += (list.empty() ? "" : ", ") + a;
         reader_.fail(pointer_ + "/" + key, "unknown key '" + key + "' (expected one of: " + list + ")");
     }
 }

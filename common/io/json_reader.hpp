@@ -53,7 +53,8 @@ public:
     Fields(const Fields&) = default;
     Fields(Fields&&) = default;
 
-    // After reading: fails on the first key no getter asked about, listing those asked.
+    // After reading: fails on the first key no getter asked about, listing those asked
+    // (sorted).
     void done() const;
 
     bool has(const char* key) const;
