@@ -16,13 +16,27 @@ namespace rt {
 namespace names_detail {
 
 // Whether V is one of its enum's enumerators. The compiler spells a template argument that
-// is an enumerator by its name ("V = rt::AccelKind::fast") and any other value as a cast
-// ("V = (rt::AccelKind)8"): GCC and Clang both do (the technique of magic_enum). The enum's
-// own definition is then the only place that says how many values it has.
+// is an enumerator by its name ("V = rt::AccelKind::fast") and any other value as a cast,
+// a closing parenthesis and a number ("V = (rt::AccelKind)8"): GCC and Clang both do (the
+// technique of magic_enum). A name never ends in ")8" (an anonymous namespace's
+// "(anonymous namespace)::" comes before it), so the enum's own definition is the only
+// place that says how many values it has. (Clang 14 spells even an enumerator as a cast
+// when its enum is a member of a class template: such an enum counts 0 and its table fails
+// to compile, loudly; none of the library's enums is one.)
 template <auto V>
 constexpr bool is_enumerator() {
     constexpr std::string_view signature = __PRETTY_FUNCTION__;
-    return signature.substr(signature.rfind('=')).find('(') == std::string_view::npos;
+    const std::string_view value = signature.substr(signature.rfind('='));
+    const std::size_t close = value.rfind(')');
+    if (close == std::string_view::npos) return true;
+    bool digits = false;  // only digits (and a sign, and the "]" GCC ends with) after it: a cast
+    for (const char c : value.substr(close + 1)) {
+        if (c >= '0' && c <= '9')
+            digits = true;
+        else if (c != '-' && c != ']' && c != ' ')
+            return true;
+    }
+    return !digits;
 }
 
 // The enumerators of E, counted from 0 up to the first value that is not one (every enum
