@@ -156,6 +156,8 @@ scene("transform_not_array", {S + "/transform": {"scale": 2}}, S + "/transform",
 scene("transform_step_not_object", {S + "/transform": [2]}, S + "/transform/0", "must be an object")
 scene("transform_two_kinds", {S + "/transform": [{"scale": 2, "translate": [0, 0, 0]}]}, "exactly one of")
 scene("transform_no_kind", {S + "/transform": [{}]}, "exactly one of")
+scene("transform_step_unknown_key", {S + "/transform": [{"scale": 2, "skew": 1}]}, S + "/transform/0/skew",
+      "unknown key 'skew'")
 scene("transform_rotate_no_degrees", {S + "/transform": [{"rotate": [0, 1, 0]}]}, "'rotate' and 'degrees' go together")
 scene("transform_rotate_zero_axis", {S + "/transform": [{"rotate": [0, 0, 0], "degrees": 10}]}, "must not be zero")
 scene("transform_degrees_huge", {S + "/transform": [{"rotate": [0, 1, 0], "degrees": 1e9}]}, "angle must be in")
@@ -164,6 +166,12 @@ scene("instance_unknown_shape", {S: {"type": "instance", "shape": "teapot"}}, "n
 scene("instance_inside_shapes", {"/shapes": {"a": {"type": "instance", "shape": "a"}}}, "/shapes/a/type",
       "cannot be one there")
 scene("instance_shape_missing", {S: {"type": "instance"}}, "missing key 'shape'")
+# A shape of /shapes has no material, name or transform: its instances give them.
+scene("shapes_entry_material", {"/shapes": {"a": {"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}}},
+      "/shapes/a/material", "unknown key 'material'")
+scene("instance_unknown_key", {S: {"type": "instance", "shape": "a", "smooth": True},
+                                "/shapes": {"a": {"type": "sphere", "center": [0, 0, 0], "radius": 1}}},
+      S + "/smooth", "unknown key 'smooth'")
 scene("shapes_bad_entry", {"/shapes": {"a": {"type": "sphere", "center": [0, 0, 0], "radius": -1}}},
       "/shapes/a/radius", "length must be in")
 scene("smooth_sphere", {S + "/smooth": True}, S + "/smooth", "only meshes have vertex normals")
