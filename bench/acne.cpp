@@ -53,7 +53,7 @@ int main(int argc, char** argv) {
         o.height = 300;
         for (const Offset& m : methods) {
             const RenderResult r = render(acne_scene(Real(1e5), m), o);
-            const std::string path = images + "/acne-" + real_name() + "-" + kOffsetMethodNames[int(m.method)] + ".png";
+            const std::string path = images + "/acne-" + real_name() + "-" + kOffsetMethodNames[m.method] + ".png";
             write_image(r.image, path);
             std::printf("wrote %s\n", path.c_str());
         }

@@ -145,7 +145,7 @@ int main(int argc, char** argv) {
                 if (kind == AccelKind::none) bytes = 0;
                 Row r{input,
                       triangles,
-                      accel_name(kind),
+                      kAccelNames[kind],
                       build,
                       seconds / double(use) * 1e9,
                       double(traversal_tally.nodes) / double(use),
@@ -168,13 +168,13 @@ int main(int argc, char** argv) {
         for (AccelKind kind : kAccelKinds) {
             std::vector<double> n, query, build;
             for (const Row& r : rows)
-                if (r.input == input && r.structure == accel_name(kind) && r.build_s > 0) {
+                if (r.input == input && r.structure == kAccelNames[kind] && r.build_s > 0) {
                     n.push_back(double(r.triangles));
                     query.push_back(r.ns_per_ray);
                     build.push_back(std::max(r.build_s, 1e-7));
                 }
             if (n.size() < 2) continue;
-            std::printf("  %-8s %-13s query %5.2f  build %5.2f\n", input, accel_name(kind),
+            std::printf("  %-8s %-13s query %5.2f  build %5.2f\n", input, kAccelNames[kind],
                         bench::loglog_slope(n, query), kind == AccelKind::none ? 0.0 : bench::loglog_slope(n, build));
         }
 

@@ -100,7 +100,7 @@ int main(int argc, char** argv) {
             const Image reference = render(scene, ref).image;
             const double mean = mean_value(reference);
             std::printf("%s (%dx%d, %s filter; reference 4096 jittered samples per pixel, mean %.4f)\n", name.c_str(),
-                        base.width, base.height, filter_name(scene.antialiasing.filter), mean);
+                        base.width, base.height, kFilterNames[scene.antialiasing.filter], mean);
             std::printf("  %-9s %6s %10s %12s %10s %9s\n", "pattern", "spp", "seconds", "rays", "RMSE", "relative");
             for (PixelPattern pattern : {PixelPattern::random, PixelPattern::jittered})
                 for (int spp : {4, 16, 64, 256, 1024}) {
@@ -118,7 +118,7 @@ int main(int argc, char** argv) {
                         squared += squared_error(r.image, reference) / seeds;
                     }
                     const Row row{name, pattern, spp, seconds, rays, std::sqrt(squared), std::sqrt(squared) / mean};
-                    std::printf("  %-9s %6d %10.4f %12.0f %10.6f %9.5f\n", pattern_name(pattern), spp, row.seconds,
+                    std::printf("  %-9s %6d %10.4f %12.0f %10.6f %9.5f\n", kPatternNames[pattern], spp, row.seconds,
                                 row.rays, row.rmse, row.relative);
                     std::fflush(stdout);
                     rows.push_back(row);
@@ -149,8 +149,8 @@ int main(int argc, char** argv) {
         std::ofstream csv(csv_path);
         csv << "scene,pattern,spp,seconds,rays,rmse,relative_error\n";
         for (const Row& r : rows)
-            csv << r.scene << ',' << pattern_name(r.pattern) << ',' << r.spp << ',' << r.seconds << ',' << r.rays << ','
-                << r.rmse << ',' << r.relative << '\n';
+            csv << r.scene << ',' << kPatternNames[r.pattern] << ',' << r.spp << ',' << r.seconds << ',' << r.rays
+                << ',' << r.rmse << ',' << r.relative << '\n';
         if (!csv) {
             std::fprintf(stderr, "bench_time_error: cannot write %s\n", csv_path.c_str());
             return 1;

@@ -156,6 +156,8 @@ scene("transform_not_array", {S + "/transform": {"scale": 2}}, S + "/transform",
 scene("transform_step_not_object", {S + "/transform": [2]}, S + "/transform/0", "must be an object")
 scene("transform_two_kinds", {S + "/transform": [{"scale": 2, "translate": [0, 0, 0]}]}, "exactly one of")
 scene("transform_no_kind", {S + "/transform": [{}]}, "exactly one of")
+scene("transform_step_unknown_key", {S + "/transform": [{"scale": 2, "skew": 1}]}, S + "/transform/0/skew",
+      "unknown key 'skew'")
 scene("transform_rotate_no_degrees", {S + "/transform": [{"rotate": [0, 1, 0]}]}, "'rotate' and 'degrees' go together")
 scene("transform_rotate_zero_axis", {S + "/transform": [{"rotate": [0, 0, 0], "degrees": 10}]}, "must not be zero")
 scene("transform_degrees_huge", {S + "/transform": [{"rotate": [0, 1, 0], "degrees": 1e9}]}, "angle must be in")
@@ -164,6 +166,12 @@ scene("instance_unknown_shape", {S: {"type": "instance", "shape": "teapot"}}, "n
 scene("instance_inside_shapes", {"/shapes": {"a": {"type": "instance", "shape": "a"}}}, "/shapes/a/type",
       "cannot be one there")
 scene("instance_shape_missing", {S: {"type": "instance"}}, "missing key 'shape'")
+# A shape of /shapes has no material, name or transform: its instances give them.
+scene("shapes_entry_material", {"/shapes": {"a": {"type": "sphere", "center": [0, 0, 0], "radius": 1, "material": "m"}}},
+      "/shapes/a/material", "unknown key 'material'")
+scene("instance_unknown_key", {S: {"type": "instance", "shape": "a", "smooth": True},
+                                "/shapes": {"a": {"type": "sphere", "center": [0, 0, 0], "radius": 1}}},
+      S + "/smooth", "unknown key 'smooth'")
 scene("shapes_bad_entry", {"/shapes": {"a": {"type": "sphere", "center": [0, 0, 0], "radius": -1}}},
       "/shapes/a/radius", "length must be in")
 scene("smooth_sphere", {S + "/smooth": True}, S + "/smooth", "only meshes have vertex normals")
@@ -234,13 +242,14 @@ scene("aperture_negative", {"/camera/aperture": -0.1}, "/camera/aperture", "aper
 scene("aperture_orthographic", {"/camera/projection": "orthographic", "/camera/aperture": 0.2},
       "a lens (aperture > 0) needs a perspective camera")
 scene("lens_unknown", {"/camera/aperture": 0.2, "/camera/lens": "hexagon"}, "/camera/lens",
-      "must be \"square\" or \"disk\"")
+      "unknown lens \"hexagon\" (expected square or disk)")
 scene("lens_without_aperture", {"/camera/lens": "disk"}, "/camera/lens", "a lens needs an aperture > 0")
 scene("focus_zero", {"/camera/aperture": 0.2, "/camera/focus_distance": 0}, "/camera/focus_distance", "length must be in")
 scene("shutter_backwards", {"/camera/shutter": [0.6, 0.2]}, "/camera/shutter", "closes before it opens")
-scene("shutter_past_one", {"/camera/shutter": [0, 1.5]}, "/camera/shutter", "shutter time must be in 0..1")
-scene("shutter_one_number", {"/camera/shutter": 0.5}, "/camera/shutter", "must be [open, close]")
-scene("shutter_text", {"/camera/shutter": ["open", 1]}, "/camera/shutter", "must be [open, close]")
+scene("shutter_past_one", {"/camera/shutter": [0, 1.5]}, "/camera/shutter/1", "shutter time must be in 0..1")
+scene("shutter_one_number", {"/camera/shutter": 0.5}, "/camera/shutter: must be an array of 2 numbers")
+scene("shutter_three_numbers", {"/camera/shutter": [0, 0.5, 1]}, "/camera/shutter: must be an array of 2 numbers")
+scene("shutter_text", {"/camera/shutter": ["open", 1]}, "/camera/shutter/0: must be a number")
 scene("glossy_without_mirror", {"/materials/m/glossy": 0.2}, "/materials/m/glossy", "only a mirror")
 scene("glossy_huge", {"/materials/m/mirror": [1, 1, 1], "/materials/m/glossy": 40}, "/materials/m/glossy",
       "glossy width must be in 0..16")
@@ -272,7 +281,8 @@ scene("eye_very_far", {C + "/eye": [1e200, 0, 0]}, C + "/eye/0", "coordinate mus
 scene("fov_zero", {C + "/fov": 0}, C + "/fov", "field of view must be in 0.001..179.9 degrees")
 scene("fov_180", {C + "/fov": 180}, "field of view")
 scene("fov_negative", {C + "/fov": -10}, "field of view")
-scene("projection_unknown", {C + "/projection": "fisheye"}, "must be \"perspective\" or \"orthographic\"")
+scene("projection_unknown", {C + "/projection": "fisheye"}, C + "/projection",
+      "unknown projection \"fisheye\" (expected orthographic or perspective)")
 scene("window_height_zero", {C + "/projection": "orthographic", C + "/window_height": 0}, "length must be in")
 scene("focal_distance_negative", {C + "/focal_distance": -1}, C + "/focal_distance", "length")
 scene("camera_unknown_key", {C + "/zoom": 1}, "unknown key 'zoom'")

@@ -9,6 +9,8 @@
 - Every scene file in the repository and every ```json example of book appendix A
   validates, and loads and renders in CHAPTER_BINARY (exit 0).
 - Every file in tests/data/bad/ fails both: the schema rejects it, and the loader exits 2.
+- Every surface and light type a module of common/io/types/ defines is listed in the schema
+  (whose lists the loader's table is generated from).
 Prints one line per failure and a closing "N passed, N failed" line; exit 1 on any failure.
 """
 import json
@@ -56,6 +58,18 @@ def loads(path):
                         "-o", str(work / "schema-test.pfm")], capture_output=True, text=True)
     return r.returncode, r.stderr.strip()
 
+
+# Every type a module of common/io/types/ defines is one the schema lists: the loader's
+# table is generated from the schema's lists (common/CMakeLists.txt), so a module whose type
+# the schema lacks would never be linked in, and its type would be silently unknown.
+for kind in ("surface", "light"):
+    listed = {entry["properties"]["type"]["const"] for entry in schema["$defs"][kind]["oneOf"]}
+    defined = set()
+    for module in sorted((root / "common/io/types").glob("*.cpp")):
+        for name in re.findall(rf"^RTLAB_{kind.upper()}_TYPE\((\w+),", module.read_text(), re.M):
+            defined.add(name)
+            check(name in listed, f"{module.name}: {kind} type '{name}' is not in the schema's $defs/{kind}/oneOf")
+    check(len(defined) >= (9 if kind == "surface" else 3), f"expected the {kind} types' modules, found {sorted(defined)}")
 
 good = sorted(root.glob("chapters/*/scenes/*.json")) + sorted(root.glob("bench/scenes/*.json"))
 check(len(good) >= 6, f"expected the repository's scene files, found {len(good)}")

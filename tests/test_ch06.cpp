@@ -21,7 +21,7 @@ const std::string kScenes = rt::test::source_dir() + "/chapters/ch06_shadows/sce
 
 // A one-light scene with a floor at y = 0 (and whatever `add` puts above it).
 Scene floor_scene(Real scale) {
-    Scene s = look_at(Vec3(0, 5, 5) * scale, Vec3(0), 40, make_integrator("whitted"));
+    Scene s = look_at(Vec3(0, 5, 5) * scale, Vec3(0), 40, make_integrator(Shading::whitted));
     s.surfaces.add(
         Polygon({Vec3(-4, 0, -4) * scale, Vec3(-4, 0, 4) * scale, Vec3(4, 0, 4) * scale, Vec3(4, 0, -4) * scale}), 0,
         "floor");

@@ -22,7 +22,7 @@ const std::string kScenes = rt::test::source_dir() + "/chapters/ch07_specular_re
 // Two parallel mirrors x = -1 and x = 1 that end at z = -zmax, reflectance k, black
 // otherwise; no lights, no ambient; behind them a background of 1.
 Scene parallel_mirrors(float k, Real zmax, int depth) {
-    Scene s = look_at(Vec3(0, 0, 1), Vec3(0), 40, make_integrator("whitted"));
+    Scene s = look_at(Vec3(0, 0, 1), Vec3(0), 40, make_integrator(Shading::whitted));
     s.background = Color(1);
     s.max_depth = depth;
     Material mirror{Color(0)};

@@ -89,7 +89,7 @@ TEST_CASE("analytic: the energy through a slab at normal incidence is the series
     // term k taking 2 + 2k bounces. With depth D the renderer sums the terms k <= (D - 2)/2.
     const Real h = 0.5;
     const float a = 0.6f, n = 1.8f;
-    Scene s = look_at(Vec3(0, 0, 1), Vec3(0), 40, make_integrator("whitted"));
+    Scene s = look_at(Vec3(0, 0, 1), Vec3(0), 40, make_integrator(Shading::whitted));
     s.background = Color(1);
     s.min_reach = 0;  // every term of the series, however small
     Material glass{Color(0)};

@@ -234,7 +234,8 @@ TEST_CASE("11.2 rays aimed at a closed mesh's shared edges and vertices: none lo
 TEST_CASE("11.2 the chapter's scenes render the same image with the grid as with brute force") {
     for (const char* name : {"atoms", "stadium"}) {
         Scene scene = load_scene_file(kScenes + name + ".json");
-        if (std::string(name) == "stadium") scene.integrator = make_integrator("normal");  // cost differs by design
+        if (std::string(name) == "stadium")
+            scene.integrator = make_integrator(Shading::normal);  // cost differs by design
         CAPTURE(name);
         CHECK(rt::test::image_differences(scene, kGrid, 40, 30) == 0);
     }

@@ -38,7 +38,7 @@ TEST_CASE("13.1 combine: empty lists, touching, nested and identical spans") {
     const SpanList none;
     const SpanList a = rt::test::span_list({{0, 2}}, 0);
     for (CsgOp op : {CsgOp::union_of, CsgOp::intersection, CsgOp::difference}) {
-        CAPTURE(csg_op_name(op));
+        CAPTURE(kCsgOpNames[op]);
         CHECK(combine(op, none, none).empty());
         CHECK(combine(op, none, a).size() == (op == CsgOp::union_of ? 1u : 0u));
         CHECK(combine(op, a, none).size() == (op == CsgOp::intersection ? 0u : 1u));
@@ -77,7 +77,7 @@ TEST_CASE("13.1 combine: empty lists, touching, nested and identical spans") {
     const SpanList same = rt::test::span_list({{1, 2}}, 1);
     const SpanList one = rt::test::span_list({{1, 2}}, 0);
     for (CsgOp op : {CsgOp::union_of, CsgOp::intersection}) {
-        CAPTURE(csg_op_name(op));
+        CAPTURE(kCsgOpNames[op]);
         const SpanList both = combine(op, one, same);
         REQUIRE(ts(both) == Pairs{{1, 2}});
         CHECK((both[0].in.primitive == 0 || both[0].in.primitive == 100));
@@ -267,7 +267,7 @@ TEST_CASE("every operation agrees with point membership along random rays") {
                     const Ray ray{o, target - o};
                     errors += membership_errors(csg, ray) + membership_errors(deeper, ray);
                 }
-                CAPTURE(csg_op_name(op));
+                CAPTURE(kCsgOpNames[op]);
                 CAPTURE(i);
                 CAPTURE(j);
                 CHECK(errors == 0);

@@ -1,6 +1,7 @@
 // The shared library: images, sampling, the render loop.
 #include "core/flat_bvh.hpp"
 #include "core/float_round.hpp"
+#include "core/names.hpp"
 #include "geometry/mesh.hpp"
 #include "geometry/procedural.hpp"
 #include "geometry/sphere.hpp"
@@ -411,3 +412,30 @@ TEST_CASE("a wide node lists its slots near to far along each octant's diagonal,
 }
 
 }  // TEST_SUITE("common")
+
+namespace names_test {
+enum class Three : std::uint8_t { zero, one, two };
+enum class Alone { only };
+}  // namespace names_test
+
+// The compile-time count is what makes names_of refuse a table of the wrong length: if a
+// compiler spelled template arguments differently, it would count wrong, and this says so.
+static_assert(rt::names_detail::enumerator_count<names_test::Three>() == 3);
+static_assert(rt::names_detail::enumerator_count<names_test::Alone>() == 1);
+static_assert(rt::names_detail::enumerator_count<rt::AccelKind>() == 8);
+
+TEST_CASE("names: an enum's names both ways, and the list a message gives") {
+    constexpr auto names = names_of<names_test::Three>({"zero", "one", "two"});
+    CHECK(std::string(names[names_test::Three::two]) == "two");
+    CHECK(names.find("one") == names_test::Three::one);
+    CHECK_FALSE(names.find("One").has_value());
+    CHECK_FALSE(names.find("").has_value());
+    CHECK(names.list() == "zero, one or two");
+    CHECK(names_of<names_test::Alone>({"only"}).list() == "only");
+    CHECK(names.values()[2] == names_test::Three::two);
+    // The library's tables, as the scene format and the command line spell them.
+    CHECK(kAccelNames.list() == "none, bvh-sort, bvh-midpoint, bvh-sah, grid, bsp-midpoint, bsp or fast");
+    CHECK(kShadingNames.find("cost") == Shading::cost);
+    CHECK(std::string(kRayKindNames[RayKind::refraction]) == "refraction");
+    CHECK(std::string(kDimensionNames[Dimension::other]) == "other");
+}

@@ -158,7 +158,7 @@ TEST_CASE("scene files: a lens needs a perspective camera and an aperture") {
     CHECK_THROWS_WITH(load_scene_text(R"({"camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "aperture": 1,
         "lens": "hexagon"}, "surfaces": []})",
                                       "h.json", "."),
-                      doctest::Contains("must be \"square\" or \"disk\""));
+                      doctest::Contains("/camera/lens: unknown lens \"hexagon\" (expected square or disk)"));
 }
 
 TEST_CASE("--stats: nothing moving draws no time sample") {

@@ -48,8 +48,8 @@ TEST_CASE("scene file errors name the file, line, column and key") {
     CHECK(load_error(kMinimal) == "no error");
     CHECK(load_error("{\n  \"camera\": {\"eye\": [0, 0, 5], \"target\": [0, 0, 0]},\n  \"surfaces\": [],\n  "
                      "\"colour\": 1\n}") ==
-          "test.json:4:3: /colour: unknown key 'colour' (expected one of: $schema, description, camera, shading, "
-          "background, ambient, max_depth, offset, accel, antialiasing, materials, lights, shapes, surfaces)");
+          "test.json:4:3: /colour: unknown key 'colour' (expected one of: $schema, accel, ambient, antialiasing, "
+          "background, camera, description, lights, materials, max_depth, offset, shading, shapes, surfaces)");
     CHECK(load_error(
               "{\"camera\": {\"eye\": [0, 0, 5], \"target\": [0, 0, 0]},\n \"surfaces\": [\n  {\"type\": \"sphere\", "
               "\"center\": [0, 0, 0], \"radius\": -1}]}") ==

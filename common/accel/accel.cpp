@@ -4,43 +4,6 @@
 
 namespace rt {
 
-const char* accel_name(AccelKind kind) {
-    switch (kind) {
-        case AccelKind::none:
-            return "none";
-        case AccelKind::bvh_sort:
-            return "bvh-sort";
-        case AccelKind::bvh_midpoint:
-            return "bvh-midpoint";
-        case AccelKind::bvh_sah:
-            return "bvh-sah";
-        case AccelKind::grid:
-            return "grid";
-        case AccelKind::bsp_midpoint:
-            return "bsp-midpoint";
-        case AccelKind::bsp:
-            return "bsp";
-        case AccelKind::fast:
-            return "fast";
-    }
-    return "?";
-}
-
-std::optional<AccelKind> accel_kind(const std::string& name) {
-    for (AccelKind k : kAccelKinds)
-        if (name == accel_name(k)) return k;
-    return std::nullopt;
-}
-
-std::string accel_names() {
-    std::string out;
-    for (AccelKind k : kAccelKinds) {
-        if (!out.empty()) out += ", ";
-        out += accel_name(k);
-    }
-    return out;
-}
-
 bool BruteForce::hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
     HitRecord best = no_hit_before(interval.max);
     bool found = false;

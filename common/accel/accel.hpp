@@ -11,27 +11,20 @@
 // All return the same closest hit (t, surface and primitive) and the same any-hit answer.
 #include "accel/bsp.hpp"
 #include "accel/course_bvh.hpp"
-#include "accel/two_level_bvh.hpp"
 #include "accel/grid.hpp"
 #include "accel/primitive.hpp"
+#include "accel/two_level_bvh.hpp"
 #include "core/dispatch.hpp"
+#include "core/names.hpp"
 
-#include <optional>
-#include <string>
 #include <variant>
 
 namespace rt {
 
 enum class AccelKind { none, bvh_sort, bvh_midpoint, bvh_sah, grid, bsp_midpoint, bsp, fast };
-inline constexpr AccelKind kAccelKinds[] = {AccelKind::none,    AccelKind::bvh_sort, AccelKind::bvh_midpoint,
-                                            AccelKind::bvh_sah, AccelKind::grid,     AccelKind::bsp_midpoint,
-                                            AccelKind::bsp,     AccelKind::fast};
-
-const char* accel_name(AccelKind kind);
-// The kind a name means, or nothing for an unknown name.
-std::optional<AccelKind> accel_kind(const std::string& name);
-// "none, bvh-sort, ...": for messages.
-std::string accel_names();
+inline constexpr auto kAccelNames =
+    names_of<AccelKind>({"none", "bvh-sort", "bvh-midpoint", "bvh-sah", "grid", "bsp-midpoint", "bsp", "fast"});
+inline constexpr auto kAccelKinds = kAccelNames.values();
 
 // Brute force over primitives: what every structure must agree with.
 class BruteForce {

@@ -52,7 +52,7 @@ json hit_json(const Scene& scene, const HitRecord& h) {
 json node_json(const Scene& scene, const RayTree& tree, const std::vector<std::vector<int>>& children, int i) {
     const RayNode& n = tree.nodes[std::size_t(i)];
     const auto end = [](Real v) { return std::isfinite(v) ? json(v) : json(nullptr); };
-    json j{{"kind", kRayKindNames[std::size_t(n.kind)]},
+    json j{{"kind", kRayKindNames[n.kind]},
            {"depth", n.depth},
            {"origin", to_json(n.ray.origin)},
            {"direction", to_json(n.ray.direction)},
@@ -107,7 +107,7 @@ json pick_json(const SceneEntry& entry, const Scene& scene, int x, int y, const 
 json accel_json(const Scene& scene) {
     if (!scene.accel) return nullptr;
     const AccelInfo& a = scene.accel->info();
-    return {{"kind", accel_name(a.kind)},
+    return {{"kind", kAccelNames[a.kind]},
             {"build_seconds", a.build_seconds},
             {"primitives", a.primitives},
             {"nodes", a.nodes},
@@ -123,17 +123,17 @@ json stats_json(const std::string& chapter, const SceneEntry& entry, const Scene
     };
     const double mrays = r.seconds > 0 ? double(r.counters.total()) / r.seconds / 1e6 : 0.0;
     json rays{{"total", r.counters.total()}};
-    for (std::size_t k = 0; k < kRayKinds; ++k) rays[kRayKindNames[k]] = r.counters.rays[k];
+    for (std::size_t k = 0; k < kRayKinds; ++k) rays[kRayKindNames[RayKind(k)]] = r.counters.rays[k];
     // Random numbers drawn per dimension: zero for every effect the scene does not use.
     json draws;
-    for (std::size_t d = 0; d < kDimensions; ++d) draws[kDimensionNames[d]] = r.counters.draws[d];
+    for (std::size_t d = 0; d < kDimensions; ++d) draws[kDimensionNames[Dimension(d)]] = r.counters.draws[d];
     json j{{"chapter", chapter},
            {"scene", entry.name},
            {"width", o.width},
            {"height", o.height},
            {"spp", o.spp},
-           {"pattern", pattern_name(o.antialiasing.pattern)},
-           {"filter", filter_name(o.antialiasing.filter)},
+           {"pattern", kPatternNames[o.antialiasing.pattern]},
+           {"filter", kFilterNames[o.antialiasing.filter]},
            {"threads", r.threads},
            {"real", real_name()},
            {"track", build_info::track},
@@ -222,17 +222,24 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
                    "maximum recursion depth of reflection and refraction (default: the scene's)")
         ->check(whole)
         ->check(range(limits::recursion_depth));
-    cli.add_option("--accel", inv.accel, "search structure: " + accel_names() + " (default: the scene's, else fast)")
-        ->check(CLI::Validator(
-            [](std::string& value) {
-                return accel_kind(value) ? std::string() : "unknown '" + value + "' (expected " + accel_names() + ")";
+    // A name of an enum (core/names.hpp), refused with the list of names.
+    const auto one_of = [](const auto& names) {
+        return CLI::Validator(
+            [names](std::string& value) {
+                return names.find(value) ? std::string() : "unknown '" + value + "' (expected " + names.list() + ")";
             },
-            ""));
+            "");
+    };
+    cli.add_option("--accel", inv.accel,
+                   "search structure: " + kAccelNames.list() + " (default: the scene's, else " +
+                       kAccelNames[Scene{}.accel_kind] + ")")
+        ->check(one_of(kAccelNames));
     cli.add_option("--pattern", inv.pattern,
-                   "where pixel samples go: random, regular or jittered (default: the scene's)")
-        ->check(CLI::IsMember({"random", "regular", "jittered"}));
-    cli.add_option("--filter", inv.filter, "how samples are weighed: box or tent (default: the scene's)")
-        ->check(CLI::IsMember({"box", "tent"}));
+                   "where pixel samples go: " + kPatternNames.list() + " (default: the scene's)")
+        ->check(one_of(kPatternNames));
+    cli.add_option("--filter", inv.filter,
+                   "how samples are weighed: " + kFilterNames.list() + " (default: the scene's)")
+        ->check(one_of(kFilterNames));
     cli.add_flag("--stats", inv.stats, "print render statistics as one JSON line");
     cli.set_version_flag("--version",
                          std::string(id_ + " (rtlab " + build_info::version + ", Real=" + real_name() + ", " + build_info::track +
@@ -267,7 +274,7 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
         return usage("--scene: unknown scene '" + scene_name + "' (see --list-scenes, or give a FILE.json)");
     }
     inv.spp_given = cli.count("--spp") > 0;
-    if (!inv.pattern.empty()) o.antialiasing.pattern = *pixel_pattern(inv.pattern);
+    if (!inv.pattern.empty()) o.antialiasing.pattern = *kPatternNames.find(inv.pattern);
     if (cli.count("--output") && inv.output.empty()) return usage("--output: must not be empty");
     if (cli.count("--svg")) {
         if (inv.pick.empty()) return usage("--svg: draws a picked pixel's ray tree, so it needs --pick X,Y");
@@ -291,7 +298,7 @@ int ChapterApp::execute(const Invocation& inv) const {
         Scene scene = inv.scene.build(summary);
         scene.name = inv.scene.name;
         if (inv.max_depth) scene.max_depth = *inv.max_depth;
-        scene.build_accel(inv.accel.empty() ? scene.accel_kind : *accel_kind(inv.accel));
+        scene.build_accel(inv.accel.empty() ? scene.accel_kind : *kAccelNames.find(inv.accel));
         if (!inv.pick.empty()) {
             const Pick p = pick(scene, inv.options, inv.pick[0], inv.pick[1]);
             const std::string text = dump(pick_json(inv.scene, scene, inv.pick[0], inv.pick[1], p));
@@ -309,8 +316,8 @@ int ChapterApp::execute(const Invocation& inv) const {
         RenderOptions o = inv.options;
         o.progress = ::isatty(STDERR_FILENO) != 0;
         o.antialiasing = scene.antialiasing;
-        if (!inv.pattern.empty()) o.antialiasing.pattern = *pixel_pattern(inv.pattern);
-        if (!inv.filter.empty()) o.antialiasing.filter = *pixel_filter(inv.filter);
+        if (!inv.pattern.empty()) o.antialiasing.pattern = *kPatternNames.find(inv.pattern);
+        if (!inv.filter.empty()) o.antialiasing.filter = *kFilterNames.find(inv.filter);
         if (!inv.spp_given && scene.samples > 0) o.spp = scene.samples;
         const RenderResult r = render(scene, o);
         // Everything that can fail happens before the image is written, so a failed run

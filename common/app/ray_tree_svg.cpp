@@ -224,7 +224,7 @@ std::string ray_tree_svg(const Scene& scene, const RayTree& tree, const std::str
     double lx = lo.x + 6 * unit;
     for (std::size_t k = 0; k < kRayKinds; ++k) {
         out += "<text x=\"" + num(lx) + "\" y=\"" + num(lo.y - 0.12 * h + 30 * unit) + "\" font-size=\"" + num(fs) +
-               "\" fill=\"" + kind_color(RayKind(k)) + "\">— " + kRayKindNames[k] + "</text>\n";
+               "\" fill=\"" + kind_color(RayKind(k)) + "\">— " + kRayKindNames[RayKind(k)] + "</text>\n";
         lx += 80 * unit;
     }
 
@@ -266,7 +266,7 @@ std::string ray_tree_svg(const Scene& scene, const RayTree& tree, const std::str
         const P2 a = proj(n.ray.origin), b = proj(end);
         const bool blocked_shadow = n.kind == RayKind::shadow && n.hit;
         const double width = (n.kind == RayKind::camera ? 2.2 : 1.6) * unit;
-        std::string tip = std::string(kRayKindNames[std::size_t(n.kind)]) + " ray, depth " + std::to_string(n.depth);
+        std::string tip = std::string(kRayKindNames[n.kind]) + " ray, depth " + std::to_string(n.depth);
         if (n.kind == RayKind::shadow)
             tip += ", to light " + std::to_string(n.light) + (n.hit ? ": BLOCKED" : ": reaches the light");
         else if (n.hit) {

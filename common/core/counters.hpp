@@ -1,6 +1,7 @@
 #pragma once
 // Rays cast, by kind, and shading work done. Each render tile counts into its own copy and
 // the copies are summed at the end, so counting costs no synchronisation on the hot path.
+#include "core/names.hpp"
 #include "core/sampler.hpp"
 #include "core/traversal_count.hpp"
 
@@ -12,8 +13,8 @@ namespace rt {
 
 // Why a ray was cast: what --stats counts them by, and what the recursion context carries.
 enum class RayKind : std::uint8_t { camera, shadow, reflection, refraction };
-inline constexpr std::size_t kRayKinds = 4;
-inline constexpr const char* kRayKindNames[kRayKinds] = {"camera", "shadow", "reflection", "refraction"};
+inline constexpr auto kRayKindNames = names_of<RayKind>({"camera", "shadow", "reflection", "refraction"});
+inline constexpr std::size_t kRayKinds = kRayKindNames.size();
 
 struct RayCounters {
     std::array<std::uint64_t, kRayKinds> rays{};

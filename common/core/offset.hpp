@@ -3,6 +3,7 @@
 // surface it leaves because of rounding (book §6.3, course §9.5's epsilon). Three ways, kept
 // side by side because chapter 06 measures them against each other (the acne table).
 #include "core/interval.hpp"
+#include "core/names.hpp"
 #include "core/ray.hpp"
 
 #include <cstdint>
@@ -14,7 +15,7 @@ enum class OffsetMethod : std::uint8_t {
     course,  // start at p, search t in [epsilon, max]: course §9.5 as printed
     robust,  // start at offset_origin(p, n) (exercise 6.1), search from 0: no constant to choose
 };
-inline constexpr const char* kOffsetMethodNames[] = {"normal", "course", "robust"};
+inline constexpr auto kOffsetMethodNames = names_of<OffsetMethod>({"normal", "course", "robust"});
 
 struct Offset {
     OffsetMethod method = OffsetMethod::robust;

@@ -3,6 +3,7 @@
 // owns its own PCG stream, so what a pixel draws never depends on which thread renders it
 // or in what order (images are bit-identical for any thread count), and drawing more
 // numbers in one dimension (say, more light samples) never shifts another (the lens).
+#include "core/names.hpp"
 #include "core/real.hpp"
 
 #include <pcg_random.hpp>
@@ -19,8 +20,8 @@ namespace rt {
 // its own strata and shuffles the strata against the others (the course's Fisher-Yates
 // step); keeping them apart here is what makes that possible without new signatures.
 enum class Dimension : std::uint8_t { pixel, lens, time, light, glossy, other };
-inline constexpr std::size_t kDimensions = 6;
-inline constexpr const char* kDimensionNames[kDimensions] = {"pixel", "lens", "time", "light", "glossy", "other"};
+inline constexpr auto kDimensionNames = names_of<Dimension>({"pixel", "lens", "time", "light", "glossy", "other"});
+inline constexpr std::size_t kDimensions = kDimensionNames.size();
 
 // How a pixel's samples divide each dimension (book §14.2, §15.2): not at all (random),
 // into strata sampled at their centres (regular), or at a random place in each (jittered).

@@ -11,11 +11,6 @@
 
 namespace rt {
 
-const char* csg_op_name(CsgOp op) {
-    constexpr const char* names[] = {"union", "intersection", "difference"};
-    return names[int(op)];
-}
-
 void drop_thin(SpanList& spans, Real thin, const Vec3& direction) {
     if (!(thin > 0) || spans.empty()) return;
     const Real length = glm::length(direction);

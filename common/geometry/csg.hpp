@@ -6,6 +6,7 @@
 // exercises (solutions/ch13_csg.cpp); the rest is here and in csg.cpp.
 #include "core/box.hpp"
 #include "core/interval.hpp"
+#include "core/names.hpp"
 #include "core/ray.hpp"
 #include "geometry/hit_record.hpp"
 
@@ -26,7 +27,7 @@ struct Span {
 using SpanList = std::vector<Span>;
 
 enum class CsgOp { union_of, intersection, difference };
-const char* csg_op_name(CsgOp op);  // "union", "intersection", "difference"
+inline constexpr auto kCsgOpNames = names_of<CsgOp>({"union", "intersection", "difference"});
 
 // Exercise 13.1: the spans inside `a op b`, from the spans inside a and inside b. Walk the
 // ends of both lists in order of t, entries before exits at equal t (across both lists,

@@ -4,7 +4,11 @@
 
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <exception>
 #include <filesystem>
 
 namespace rt {
@@ -30,25 +34,38 @@ void JsonReader::fail(const std::string& pointer, const std::string& message) co
 }
 
 Fields::Fields(const JsonReader& reader, const json& object, std::string pointer)
-    : reader_(reader), object_(object), pointer_(std::move(pointer)) {
+    : reader_(reader), object_(object), pointer_(std::move(pointer)), asked_(std::make_shared<Asked>()) {
     if (!object_.is_object()) reader_.fail(pointer_, "must be an object");
 }
 
-void Fields::only(const std::vector<const char*>& allowed) const {
+Fields::~Fields() {
+    // Only the last copy checks, and not while a failure unwinds the reading.
+    if (!asked_ || asked_.use_count() > 1 || asked_->done || std::uncaught_exceptions() > 0) return;
+    std::fprintf(stderr, "internal error: %s was read without done(), so its unknown keys were not checked\n",
+                 pointer_.empty() ? "/" : pointer_.c_str());
+    std::abort();
+}
+
+void Fields::ask(const char* key) const {
+    if (std::find(asked_->keys.begin(), asked_->keys.end(), key) == asked_->keys.end()) asked_->keys.emplace_back(key);
+}
+
+void Fields::done() const {
+    asked_->done = true;
     for (const auto& [key, value] : object_.items()) {
-        bool ok = false;
-        for (const char* a : allowed) ok |= key == a;
-        if (ok) continue;
+        if (std::find(asked_->keys.begin(), asked_->keys.end(), key) != asked_->keys.end()) continue;
+        // Sorted: the order keys were asked in can follow the order a compiler evaluates
+        // function arguments in, and a message should not.
+        std::vector<std::string> keys = asked_->keys;
+        std::sort(keys.begin(), keys.end());
         std::string list;
-        for (const char* a : allowed) list += std::string(list.empty() ? "" : ", ") + a;
+        for (const std::string& a : keys) list += (list.empty() ? "" : ", ") + a;
         reader_.fail(pointer_ + "/" + key, "unknown key '" + key + "' (expected one of: " + list + ")");
     }
 }
-void Fields::only(std::initializer_list<const char*> allowed) const {
-    only(std::vector<const char*>(allowed));
-}
 
 bool Fields::has(const char* key) const {
+    ask(key);
     return object_.contains(key);
 }
 
@@ -61,6 +78,7 @@ void Fields::fail(const char* key, const std::string& message) const {
 }
 
 const json& Fields::need(const char* key) const {
+    ask(key);
     if (!object_.contains(key)) reader_.fail(pointer_, std::string("missing key '") + key + "'");
     return object_.at(key);
 }
@@ -157,11 +175,24 @@ bool Fields::is_number(const char* key) const {
     return has(key) && object_.at(key).is_number();
 }
 
+std::vector<Real> Fields::numbers(const char* key, std::size_t count, const limits::Range& range) const {
+    const json& v = need(key);
+    if (!v.is_array() || v.size() != count) fail(key, "must be an array of " + std::to_string(count) + " numbers");
+    std::vector<Real> result;
+    for (std::size_t k = 0; k < count; ++k)
+        result.push_back(Real(number_at(v[k], pointer(key) + "/" + std::to_string(k), range, false)));
+    return result;
+}
+
 bool Fields::flag(const char* key, bool fallback) const {
     if (!has(key)) return fallback;
     const json& v = need(key);
     if (!v.is_boolean()) fail(key, "must be true or false");
     return v.get<bool>();
+}
+
+Fields Fields::object(const char* key) const {
+    return Fields(reader_, need(key), pointer(key));
 }
 
 std::vector<Fields> Fields::objects(const char* key) const {
@@ -171,6 +202,16 @@ std::vector<Fields> Fields::objects(const char* key) const {
     result.reserve(v.size());
     for (std::size_t i = 0; i < v.size(); ++i)
         result.emplace_back(reader_, v[i], pointer(key) + "/" + std::to_string(i));
+    return result;
+}
+
+std::vector<std::pair<std::string, Fields>> Fields::named_objects(const char* key) const {
+    const json& v = need(key);
+    if (!v.is_object()) fail(key, "must be an object");
+    std::vector<std::pair<std::string, Fields>> result;
+    result.reserve(v.size());
+    for (const auto& [name, value] : v.items())
+        result.emplace_back(name, Fields(reader_, value, pointer(key) + "/" + name));
     return result;
 }
 

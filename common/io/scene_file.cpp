@@ -19,14 +19,8 @@ namespace {
 using nlohmann::json;
 
 Camera read_camera(const Fields& f) {
-    f.only({"projection", "eye", "target", "up", "fov", "window_height", "focal_distance", "aperture", "focus_distance",
-            "lens", "shutter"});
     Camera cam;
-    const std::string projection = f.text("projection", "perspective");
-    if (projection == "orthographic")
-        cam.projection = Projection::orthographic;
-    else if (projection != "perspective")
-        f.fail("projection", "must be \"perspective\" or \"orthographic\", not \"" + projection + "\"");
+    cam.projection = f.choice("projection", kProjectionNames, "projection", cam.projection);
     cam.eye = f.vec3("eye");
     cam.target = f.vec3("target");
     cam.up = f.vec3("up", cam.up);
@@ -36,26 +30,16 @@ Camera read_camera(const Fields& f) {
     // Chapter 16: a thin lens; chapter 18: the shutter interval.
     cam.aperture = f.number("aperture", limits::aperture, cam.aperture);
     cam.focus_distance = f.length("focus_distance", cam.focus_distance);
-    const std::string lens = f.text("lens", "square");
-    if (lens == "disk")
-        cam.lens = LensShape::disk;
-    else if (lens != "square")
-        f.fail("lens", "must be \"square\" or \"disk\", not \"" + lens + "\"");
+    cam.lens = f.choice("lens", kLensNames, "lens", cam.lens);
     if ((f.has("focus_distance") || f.has("lens")) && !(cam.aperture > 0))
         f.fail(f.has("lens") ? "lens" : "focus_distance", "a lens needs an aperture > 0");
     if (f.has("shutter")) {
-        const json& v = f.value()["shutter"];
-        if (!v.is_array() || v.size() != 2) f.fail("shutter", "must be [open, close], two times in [0, 1]");
-        const auto at = [&](std::size_t k) {
-            if (!v[k].is_number()) f.fail("shutter", "must be [open, close], two times in [0, 1]");
-            const double x = v[k].get<double>();
-            if (!limits::contains(limits::shutter, x)) f.fail("shutter", limits::refuse(limits::shutter, x));
-            return Real(x);
-        };
-        cam.shutter_open = at(0);
-        cam.shutter_close = at(1);
+        const std::vector<Real> times = f.numbers("shutter", 2, limits::shutter);
+        cam.shutter_open = times[0];
+        cam.shutter_close = times[1];
         if (!(cam.shutter_open <= cam.shutter_close)) f.fail("shutter", "closes before it opens");
     }
+    f.done();
     try {
         cam.validate();
     } catch (const std::invalid_argument& e) {
@@ -66,13 +50,11 @@ Camera read_camera(const Fields& f) {
 
 Light read_light(const Fields& f) {
     const std::string type = f.text("type");
-    for (const LightType& t : light_types()) {
-        if (type != t.name) continue;
-        std::vector<const char*> keys = {"type", "color"};
-        keys.insert(keys.end(), t.keys.begin(), t.keys.end());
-        f.only(keys);
-        Light light = t.read(f);
+    for (const LightType* t : light_types()) {
+        if (type != t->name) continue;
+        Light light = t->read(f);
         light.color = f.color("color", limits::radiance, light.color);
+        f.done();
         return light;
     }
     f.fail("type", "unknown light type \"" + type + "\" (expected " + type_names(light_types()) + ")");
@@ -104,23 +86,16 @@ struct Loader {
 
 Shape read_csg(const Loader& loader, const Fields& f);
 
-// The shape of one /surfaces (or /shapes) entry, by its type's module. Keys every type
-// takes: "smooth" (meshes only) gives a mesh vertex normals for smooth shading.
-Shape read_shape(const Loader& loader, const Fields& f, std::vector<const char*> common) {
+// The shape of one /surfaces (or /shapes) entry, by its type's module. A key every type
+// takes: "smooth" (meshes only) gives a mesh vertex normals for smooth shading. The caller
+// reads the entry's other keys and then checks that none is left (Fields::done).
+Shape read_shape(const Loader& loader, const Fields& f) {
     const std::string type = f.text("type");
-    if (type == "csg") {
-        common.insert(common.end(), {"type", "op", "operands", "thin"});
-        f.only(common);
-        return read_csg(loader, f);
-    }
-    for (const SurfaceType& t : surface_types()) {
-        if (type != t.name) continue;
-        common.push_back("type");
-        common.push_back("smooth");
-        common.insert(common.end(), t.keys.begin(), t.keys.end());
-        f.only(common);
+    if (type == "csg") return read_csg(loader, f);
+    for (const SurfaceType* t : surface_types()) {
+        if (type != t->name) continue;
         try {
-            Shape shape = t.read(f);
+            Shape shape = t->read(f);
             if (f.has("smooth")) {
                 const Mesh* mesh = std::get_if<Mesh>(&shape);
                 if (!mesh)
@@ -135,6 +110,25 @@ Shape read_shape(const Loader& loader, const Fields& f, std::vector<const char*>
     if (type == "instance") f.fail("type", "an instance names a shape of /shapes; it cannot be one there");
     f.fail("type",
            "unknown surface type \"" + type + "\" (expected " + type_names(surface_types()) + ", csg or instance)");
+}
+
+// {"type": "instance", "shape": name}: a shape of /shapes, shared, not copied. `reused`: the
+// shape was named before.
+std::shared_ptr<const Shape> read_instance(const Loader& loader, const Fields& f, bool& reused) {
+    if (loader.in_shapes)
+        f.fail("type", "an operand of a shape in /shapes cannot name another shape; give the operand itself");
+    const std::string name = f.text("shape");
+    const auto it = loader.shapes.find(name);
+    if (it == loader.shapes.end()) f.fail("shape", "no shape named \"" + name + "\" in /shapes");
+    reused = loader.shape_uses[name]++ > 0;
+    return it->second;
+}
+
+// The shape of a /surfaces entry or a CSG operand: an instance or a shape of its own.
+std::shared_ptr<const Shape> read_entry_shape(const Loader& loader, const Fields& f, bool& reused) {
+    if (f.text("type") == "instance") return read_instance(loader, f, reused);
+    reused = false;
+    return std::make_shared<const Shape>(read_shape(loader, f));
 }
 
 // A shape seen through the entry's "transform", if it has one: an instance of it, which must
@@ -156,19 +150,8 @@ std::shared_ptr<const Shape> transformed(const Fields& f, std::shared_ptr<const 
 // One operand of a CSG object: any solid surface entry (an instance of /shapes too), with
 // its own material and name if it gives them.
 CsgOperand read_operand(const Loader& loader, const Fields& f) {
-    std::shared_ptr<const Shape> base;
-    if (f.text("type") == "instance") {
-        f.only({"type", "name", "material", "shape", "transform"});
-        if (loader.in_shapes)
-            f.fail("type", "an operand of a shape in /shapes cannot name another shape; give the operand itself");
-        const std::string name = f.text("shape");
-        const auto it = loader.shapes.find(name);
-        if (it == loader.shapes.end()) f.fail("shape", "no shape named \"" + name + "\" in /shapes");
-        ++loader.shape_uses[name];
-        base = it->second;
-    } else {
-        base = std::make_shared<const Shape>(read_shape(loader, f, {"name", "material", "transform"}));
-    }
+    bool reused = false;
+    const std::shared_ptr<const Shape> base = read_entry_shape(loader, f, reused);
     const std::string why = not_solid(*base);
     if (!why.empty()) {
         const std::string name = f.text("name", "");
@@ -176,6 +159,7 @@ CsgOperand read_operand(const Loader& loader, const Fields& f) {
     }
     CsgOperand operand{transformed(f, base), kNone, f.text("name", "")};
     if (f.has("material")) operand.material = loader.material(f);
+    f.done();
     return operand;
 }
 
@@ -193,12 +177,7 @@ CsgOperand join(CsgOp op, std::vector<CsgOperand>& operands, std::size_t first, 
 // "thin": length}: A op B op C ...; a difference takes every later operand from the first,
 // A - (B u C u ...).
 Shape read_csg(const Loader& loader, const Fields& f) {
-    const std::string name = f.text("op");
-    CsgOp op{};
-    bool known = false;
-    for (CsgOp o : {CsgOp::union_of, CsgOp::intersection, CsgOp::difference})
-        if (name == csg_op_name(o)) op = o, known = true;
-    if (!known) f.fail("op", "unknown CSG operation \"" + name + "\" (expected union, intersection or difference)");
+    const CsgOp op = f.choice("op", kCsgOpNames, "CSG operation");
     const std::vector<Fields> list = f.objects("operands");
     if (!limits::contains(limits::csg_operands, double(list.size())))
         f.fail("operands", limits::refuse(limits::csg_operands, double(list.size())));
@@ -260,68 +239,41 @@ Scene load_scene_text(const std::string& text, const std::string& filename, cons
     const json doc = parse(text, filename);
     const JsonReader reader(text, filename, base_dir);
     const Fields top(reader, doc, "");
-    top.only({"$schema", "description", "camera", "shading", "background", "ambient", "max_depth", "offset", "accel",
-              "antialiasing", "materials", "lights", "shapes", "surfaces"});
     SceneSummary summary;
     summary.from_file = true;
     Scene scene;
+    (void)top.text("$schema", "");  // where an editor finds the schema; nothing to the loader
     scene.description = top.text("description", "");
     if (!top.has("camera")) top.fail("", "missing key 'camera'");
-    scene.camera = read_camera(Fields(reader, doc["camera"], "/camera"));
-    const std::string shading = top.text("shading", "phong");
-    scene.integrator = make_integrator(shading);
-    if (!scene.integrator)
-        top.fail("shading", "unknown shading \"" + shading +
-                                "\" (expected phong, whitted, normal, barycentric, direction or cost)");
+    scene.camera = read_camera(top.object("camera"));
+    scene.integrator = make_integrator(top.choice("shading", kShadingNames, "shading", Shading::phong));
     scene.max_depth = top.integer("max_depth", limits::recursion_depth, scene.max_depth);
-    const std::string accel = top.text("accel", accel_name(scene.accel_kind));
-    if (const auto kind = accel_kind(accel))
-        scene.accel_kind = *kind;
-    else
-        top.fail("accel", "unknown accel \"" + accel + "\" (expected " + accel_names() + ")");
+    scene.accel_kind = top.choice("accel", kAccelNames, "accel", scene.accel_kind);
     if (top.has("offset")) {
-        const Fields o(reader, doc["offset"], "/offset");
-        o.only({"method", "epsilon"});
-        const std::string method = o.text("method", "robust");
-        bool known = false;
-        for (int k = 0; k < 3; ++k)
-            if (method == kOffsetMethodNames[k]) scene.offset.method = OffsetMethod(k), known = true;
-        if (!known) o.fail("method", "unknown offset method \"" + method + "\" (expected robust, course or normal)");
+        const Fields o = top.object("offset");
+        scene.offset.method = o.choice("method", kOffsetMethodNames, "offset method", scene.offset.method);
         scene.offset.epsilon = o.length("epsilon", scene.offset.epsilon);
+        o.done();
     }
     if (top.has("antialiasing")) {
-        const Fields a(reader, doc["antialiasing"], "/antialiasing");
-        a.only({"pattern", "filter", "samples"});
-        const std::string pattern = a.text("pattern", pattern_name(scene.antialiasing.pattern));
-        if (const auto p = pixel_pattern(pattern))
-            scene.antialiasing.pattern = *p;
-        else
-            a.fail("pattern", "unknown pattern \"" + pattern + "\" (expected random, regular or jittered)");
-        const std::string filter = a.text("filter", filter_name(scene.antialiasing.filter));
-        if (const auto f = pixel_filter(filter))
-            scene.antialiasing.filter = *f;
-        else
-            a.fail("filter", "unknown filter \"" + filter + "\" (expected box or tent)");
+        const Fields a = top.object("antialiasing");
+        scene.antialiasing.pattern = a.choice("pattern", kPatternNames, "pattern", scene.antialiasing.pattern);
+        scene.antialiasing.filter = a.choice("filter", kFilterNames, "filter", scene.antialiasing.filter);
         scene.samples = a.integer("samples", limits::samples_per_pixel, 0);
         if (scene.samples && scene.antialiasing.pattern != PixelPattern::random && !pattern_side(scene.samples))
-            a.fail("samples", "the " + pattern + " pattern takes n x n samples (1, 4, 9, 16, ...)");
+            a.fail("samples", std::string("the ") + kPatternNames[scene.antialiasing.pattern] +
+                                  " pattern takes n x n samples (1, 4, 9, 16, ...)");
+        a.done();
     }
     scene.background = top.color("background", limits::radiance, scene.background);
     scene.ambient = top.color("ambient", limits::radiance, scene.ambient);
 
     // Materials by name; only those a surface uses are kept, numbered from 1 (0 is the default).
     std::map<std::string, Material> materials;
-    if (top.has("materials")) {
-        const Fields ms(reader, doc["materials"], "/materials");
-        for (const auto& [name, m] : doc["materials"].items())
-            materials.emplace(name, read_material(Fields(reader, m, "/materials/" + name)));
-    }
-    if (top.has("lights")) {
-        const json& ls = doc["lights"];
-        if (!ls.is_array()) top.fail("lights", "must be an array");
-        for (std::size_t i = 0; i < ls.size(); ++i)
-            scene.lights.push_back(read_light(Fields(reader, ls[i], "/lights/" + std::to_string(i))));
-    }
+    if (top.has("materials"))
+        for (const auto& [name, m] : top.named_objects("materials")) materials.emplace(name, read_material(m));
+    if (top.has("lights"))
+        for (const Fields& l : top.objects("lights")) scene.lights.push_back(read_light(l));
     summary.lights_black = scene.drop_unused_lights();
     summary.lights = int(scene.lights.size());
 
@@ -331,31 +283,20 @@ Scene load_scene_text(const std::string& text, const std::string& filename, cons
     std::map<std::string, MaterialId> used;
     const Loader loader{reader, materials, used, scene, shapes, shape_uses};
     if (top.has("shapes")) {
-        const Fields all(reader, doc["shapes"], "/shapes");
         Loader shapes_loader = loader;
         shapes_loader.in_shapes = true;
-        for (const auto& [name, s] : doc["shapes"].items())
-            shapes.emplace(name, std::make_shared<const Shape>(
-                                     read_shape(shapes_loader, Fields(reader, s, "/shapes/" + name), {})));
+        for (const auto& [name, s] : top.named_objects("shapes")) {
+            shapes.emplace(name, std::make_shared<const Shape>(read_shape(shapes_loader, s)));
+            s.done();
+        }
     }
 
     if (!top.has("surfaces")) top.fail("", "missing key 'surfaces'");
-    const json& ss = doc["surfaces"];
-    if (!ss.is_array()) top.fail("surfaces", "must be an array");
-    for (std::size_t i = 0; i < ss.size(); ++i) {
-        const Fields f(reader, ss[i], "/surfaces/" + std::to_string(i));
-        std::shared_ptr<const Shape> base;
+    const std::vector<Fields> ss = top.objects("surfaces");
+    top.done();
+    for (const Fields& f : ss) {
         bool reused = false;  // a named shape used before
-        if (f.text("type") == "instance") {
-            f.only({"type", "name", "material", "shape", "transform"});
-            const std::string name = f.text("shape");
-            const auto it = shapes.find(name);
-            if (it == shapes.end()) f.fail("shape", "no shape named \"" + name + "\" in /shapes");
-            base = it->second;
-            reused = shape_uses[name]++ > 0;
-        } else {
-            base = std::make_shared<const Shape>(read_shape(loader, f, {"name", "material", "transform"}));
-        }
+        const std::shared_ptr<const Shape> base = read_entry_shape(loader, f, reused);
         // A mesh's copy shares its triangles; other shapes are copied.
         const std::shared_ptr<const Shape> placed = transformed(f, base);
         Shape shape = *placed;
@@ -369,6 +310,7 @@ Scene load_scene_text(const std::string& text, const std::string& filename, cons
         if (!reused) count_triangles(*base, summary);  // stored once, counted once
         const MaterialId material = f.has("material") ? loader.material(f) : 0;
         scene.surfaces.add(std::move(shape), material, f.text("name", ""));
+        f.done();
     }
     summary.surfaces = int(ss.size());
     summary.materials = int(used.size());

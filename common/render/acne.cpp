@@ -13,7 +13,7 @@ Scene acne_scene(Real scale, const Offset& offset) {
     // (3, 2, -4) * 10^5, where a float's unit in the last place is about 0.03.
     const Vec3 shift(3, 2, -4);
     const auto at = [&](const Vec3& p) { return scale * (p + shift); };
-    Scene s = look_at(at(Vec3(0, 2.2, 7)), at(Vec3(0.6, 0.5, 0)), 40, make_integrator("whitted"));
+    Scene s = look_at(at(Vec3(0, 2.2, 7)), at(Vec3(0.6, 0.5, 0)), 40, make_integrator(Shading::whitted));
     s.camera.up = Vec3(0, 1, 0);
     s.background = Color(0.55f, 0.7f, 0.9f);
     s.ambient = Color(0.12f);

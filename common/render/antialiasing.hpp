@@ -3,6 +3,7 @@
 // they are weighed into the pixel (the filter). stratified_point and tent_offset are the
 // chapter 14 exercises (solutions/ch14_antialiasing.cpp); camera_sample in render.hpp puts
 // them together.
+#include "core/names.hpp"
 #include "core/real.hpp"
 
 #include <cstdint>
@@ -24,10 +25,8 @@ struct Antialiasing {
     PixelFilter filter = PixelFilter::box;
 };
 
-const char* pattern_name(PixelPattern p);  // "random", "regular", "jittered"
-const char* filter_name(PixelFilter f);    // "box", "tent"
-std::optional<PixelPattern> pixel_pattern(const std::string& name);
-std::optional<PixelFilter> pixel_filter(const std::string& name);
+inline constexpr auto kPatternNames = names_of<PixelPattern>({"random", "regular", "jittered"});
+inline constexpr auto kFilterNames = names_of<PixelFilter>({"box", "tent"});
 
 // The side n of an n x n pattern of spp samples; nothing unless spp is a square.
 std::optional<int> pattern_side(int spp);

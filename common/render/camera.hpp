@@ -1,6 +1,7 @@
 #pragma once
 // Viewing rays (book §1, course §9.2). The four free functions are the chapter 01
 // exercises; their reference bodies live in solutions/ch01_viewing_rays.cpp.
+#include "core/names.hpp"
 #include "core/ray.hpp"
 
 #include <cstdint>
@@ -8,6 +9,7 @@
 namespace rt {
 
 enum class Projection { orthographic, perspective };
+inline constexpr auto kProjectionNames = names_of<Projection>({"orthographic", "perspective"});
 
 // The camera frame: the eye looks along -w, v is up, u is right.
 struct Basis {
@@ -36,6 +38,7 @@ Ray perspective_ray(const Vec3& eye, const Basis& uvw, Real d, const Vec2& uv);
 
 // The shape of a thin lens (chapter 16): the course's square, or a round one.
 enum class LensShape : std::uint8_t { square, disk };
+inline constexpr auto kLensNames = names_of<LensShape>({"square", "disk"});
 
 // Exercise 16.1: a point of the lens from u in [0, 1)^2, in lens coordinates centred on the
 // lens's middle. The square: 2u - 1, in [-1, 1)^2. The disk: any map onto the unit disk that

@@ -21,13 +21,21 @@ Color CostIntegrator::Li(const Scene& scene, const Ray& ray, TraceContext&) cons
     return glm::mix(stops[k], stops[k + 1], at - float(k));
 }
 
-std::shared_ptr<const Integrator> make_integrator(const std::string& name) {
-    if (name == "phong") return std::make_shared<PhongIntegrator>();
-    if (name == "whitted") return std::make_shared<WhittedIntegrator>();
-    if (name == "normal") return std::make_shared<NormalIntegrator>();
-    if (name == "barycentric") return std::make_shared<BarycentricIntegrator>();
-    if (name == "direction") return std::make_shared<RayDirectionIntegrator>();
-    if (name == "cost") return std::make_shared<CostIntegrator>();
+std::shared_ptr<const Integrator> make_integrator(Shading shading) {
+    switch (shading) {  // no default: a new kind of shading without an integrator is warned about
+        case Shading::phong:
+            return std::make_shared<PhongIntegrator>();
+        case Shading::whitted:
+            return std::make_shared<WhittedIntegrator>();
+        case Shading::normal:
+            return std::make_shared<NormalIntegrator>();
+        case Shading::barycentric:
+            return std::make_shared<BarycentricIntegrator>();
+        case Shading::direction:
+            return std::make_shared<RayDirectionIntegrator>();
+        case Shading::cost:
+            return std::make_shared<CostIntegrator>();
+    }
     return nullptr;
 }
 

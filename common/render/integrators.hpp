@@ -3,8 +3,10 @@
 #include "render/scene.hpp"
 #include "shading/shading.hpp"
 
+#include "core/names.hpp"
+
+#include <cstdint>
 #include <memory>
-#include <string>
 
 namespace rt {
 
@@ -94,9 +96,11 @@ public:
     }
 };
 
-// The integrator a scene file names: "phong", "whitted" (render/whitted.hpp), "normal",
-// "barycentric" or "direction".
-// Null for an unknown name.
-std::shared_ptr<const Integrator> make_integrator(const std::string& name);
+// The integrators a scene file can name ("shading"): whitted is render/whitted.hpp, cost
+// the CostIntegrator above.
+enum class Shading : std::uint8_t { phong, whitted, normal, barycentric, direction, cost };
+inline constexpr auto kShadingNames =
+    names_of<Shading>({"phong", "whitted", "normal", "barycentric", "direction", "cost"});
+std::shared_ptr<const Integrator> make_integrator(Shading shading);
 
 }  // namespace rt

@@ -79,7 +79,8 @@ void check_budget(const RenderOptions& o) {
     in(limits::image_pixels, pixels, "--width x --height");
     in(limits::image_samples, pixels * double(o.spp), "--width x --height x --spp");
     if (o.antialiasing.pattern != PixelPattern::random && !pattern_side(o.spp))
-        throw std::invalid_argument("--spp " + std::to_string(o.spp) + ": the " + pattern_name(o.antialiasing.pattern) +
+        throw std::invalid_argument("--spp " + std::to_string(o.spp) + ": the " +
+                                    kPatternNames[o.antialiasing.pattern] +
                                     " pattern takes n x n samples (1, 4, 9, 16, ...)");
 }
 

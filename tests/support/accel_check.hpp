@@ -126,7 +126,7 @@ inline std::string structure_label(AccelKind kind) {
             uses = "library code only";
             break;
     }
-    return std::string(accel_name(kind)) + " (" + uses + ")";
+    return std::string(kAccelNames[kind]) + " (" + uses + ")";
 }
 
 // Each structure's closest hit and any-hit answer against brute force, for these rays.

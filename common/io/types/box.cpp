@@ -3,8 +3,14 @@
 
 namespace rt {
 
+namespace {
+
 Shape read_box(const Fields& f) {
     return Cuboid(f.vec3("min"), f.vec3("max"));
 }
+
+}  // namespace
+
+RTLAB_SURFACE_TYPE(box, read_box);
 
 }  // namespace rt

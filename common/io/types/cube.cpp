@@ -4,9 +4,15 @@
 
 namespace rt {
 
+namespace {
+
 Shape read_cube(const Fields& f) {
     return Mesh(
         subdivided_cube(f.vec3("center"), f.length("size"), f.integer("subdivisions", limits::cube_subdivisions, 1)));
 }
+
+}  // namespace
+
+RTLAB_SURFACE_TYPE(cube, read_cube);
 
 }  // namespace rt

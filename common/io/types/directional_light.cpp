@@ -4,11 +4,17 @@
 
 namespace rt {
 
+namespace {
+
 Light read_directional_light(const Fields& f) {
     Light l;
     l.type = Light::Type::directional;
     l.direction = f.direction("direction");
     return l;
 }
+
+}  // namespace
+
+RTLAB_LIGHT_TYPE(directional, read_directional_light);
 
 }  // namespace rt

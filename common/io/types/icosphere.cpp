@@ -4,9 +4,15 @@
 
 namespace rt {
 
+namespace {
+
 Shape read_icosphere(const Fields& f) {
     return Mesh(
         icosphere(f.vec3("center"), f.length("radius"), f.integer("subdivisions", limits::icosphere_subdivisions, 2)));
 }
+
+}  // namespace
+
+RTLAB_SURFACE_TYPE(icosphere, read_icosphere);
 
 }  // namespace rt

@@ -5,6 +5,8 @@
 
 namespace rt {
 
+namespace {
+
 Shape read_mesh_file(const Fields& f) {
     MeshData data;
     try {
@@ -17,5 +19,9 @@ Shape read_mesh_file(const Fields& f) {
     for (Vec3& p : data.positions) p = p * scale + translate;
     return Mesh(std::move(data));
 }
+
+}  // namespace
+
+RTLAB_SURFACE_TYPE(mesh, read_mesh_file);
 
 }  // namespace rt

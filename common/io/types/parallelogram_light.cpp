@@ -5,6 +5,8 @@
 
 namespace rt {
 
+namespace {
+
 Light read_parallelogram_light(const Fields& f) {
     Light l;
     l.type = Light::Type::parallelogram;
@@ -20,5 +22,9 @@ Light read_parallelogram_light(const Fields& f) {
                                limits::refuse(limits::coordinate, double(corner[k])) + ")");
     return l;
 }
+
+}  // namespace
+
+RTLAB_LIGHT_TYPE(parallelogram, read_parallelogram_light);
 
 }  // namespace rt

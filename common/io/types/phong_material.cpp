@@ -5,7 +5,6 @@
 namespace rt {
 
 Material read_material(const Fields& f) {
-    f.only({"diffuse", "specular", "exponent", "checker", "checker_size", "mirror", "glossy", "ior", "attenuation"});
     Material m;
     m.ior = float(f.number("ior", limits::index_of_refraction, 0));
     // Clear glass unless told otherwise: a dielectric's default diffuse colour is black.
@@ -22,6 +21,7 @@ Material read_material(const Fields& f) {
     if (f.has("attenuation") && !m.is_dielectric()) f.fail("attenuation", "only a dielectric (with 'ior') has it");
     if (m.is_dielectric() && f.has("mirror"))
         f.fail("mirror", "a dielectric reflects by Schlick's R, not a mirror colour");
+    f.done();
     return m;
 }
 

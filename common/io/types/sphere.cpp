@@ -5,9 +5,15 @@
 
 namespace rt {
 
+namespace {
+
 Shape read_sphere(const Fields& f) {
     const Vec3 c = f.vec3("center");
     return Sphere(c, f.length("radius"), f.has("moves_to") ? f.vec3("moves_to") - c : Vec3(0));
 }
+
+}  // namespace
+
+RTLAB_SURFACE_TYPE(sphere, read_sphere);
 
 }  // namespace rt

@@ -4,9 +4,15 @@
 
 namespace rt {
 
+namespace {
+
 Shape read_terrain(const Fields& f) {
     return Mesh(terrain(f.vec3("center"), f.length("size"), f.number("height", limits::coordinate),
                         f.integer("cells", limits::terrain_cells, 64)));
 }
+
+}  // namespace
+
+RTLAB_SURFACE_TYPE(terrain, read_terrain);
 
 }  // namespace rt

@@ -8,7 +8,6 @@ namespace rt {
 Affine read_transform(const Fields& f, const char* key) {
     Affine a;
     for (const Fields& step : f.objects(key)) {
-        step.only({"scale", "rotate", "degrees", "translate"});
         const int kinds = int(step.has("scale")) + int(step.has("rotate")) + int(step.has("translate"));
         if (kinds != 1) step.fail("", "each step has exactly one of 'scale', 'rotate' or 'translate'");
         if (step.has("degrees") != step.has("rotate")) step.fail("", "'rotate' and 'degrees' go together");
@@ -23,6 +22,7 @@ Affine read_transform(const Fields& f, const char* key) {
         } else {
             s = Affine::scale(step.vec3("scale"));
         }
+        step.done();
         a = a.then(s);
     }
     try {

@@ -3,9 +3,15 @@
 
 namespace rt {
 
+namespace {
+
 Shape read_triangle(const Fields& f) {
     const auto v = f.points("vertices", limits::triangle_vertices);
     return Triangle(v[0], v[1], v[2]);
 }
+
+}  // namespace
+
+RTLAB_SURFACE_TYPE(triangle, read_triangle);
 
 }  // namespace rt
