@@ -107,12 +107,15 @@ bool traverse(const FlatBvh& bvh, const Ray& ray, Interval interval, Leaf&& leaf
             }
         } else {
             for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
-                ++count.items;
                 if (leaf(k, interval)) {
-                    if (kAny) return true;
+                    if (kAny) {
+                        count.items += k + 1 - node.first;  // the items tested
+                        return true;
+                    }
                     found = true;
                 }
             }
+            count.items += node.count;
         }
         // Next: the nearest postponed node still in front of the best hit.
         for (;;) {
