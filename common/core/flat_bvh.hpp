@@ -67,17 +67,13 @@ inline Real enter(const BvhNode& node, const BoxRay& ray, Real tmin, Real tmax) 
     return tmin <= widen_far(tmax) ? tmin : kInfinity;
 }
 
-// Both queries walk the tree the same way, as the wide BVH's do (traverse in
-// core/wide_bvh.hpp): at an inner node both children's boxes are tested, the nearer one is
-// followed and the farther one, if entered too, goes on a stack with its entry distance.
-// leaf(k, interval) tests the item in slot k (item number bvh.items[k]; a caller may keep
-// per-item data in slot order) against `interval`.
-// - The closest hit (kAny false): when leaf finds a hit closer than the best so far it keeps
-//   it, sets interval.max to its t, and returns true; a postponed node whose entry lies
-//   beyond the best hit found since it was pushed is skipped.
-// - Any hit (kAny true): the first item leaf reports a hit for ends the search.
-template <bool kAny, class Leaf>
-bool traverse(const FlatBvh& bvh, const Ray& ray, Interval interval, Leaf&& leaf) {
+// The closest hit: nearer child first, the farther one on a stack with its entry distance,
+// skipped when popped if a hit closer than that has been found since. leaf(k, interval)
+// tests the item in slot k (item number bvh.items[k]; a caller may keep per-item data in
+// slot order) against `interval`; when it finds a hit closer than the best so far it keeps
+// it, sets interval.max to its t, and returns true.
+template <class Leaf>
+bool closest_hit(const FlatBvh& bvh, const Ray& ray, Interval interval, Leaf&& leaf) {
     if (bvh.nodes.empty()) return false;
     TallyScope tally;
     TraversalCount& count = tally.count;
@@ -106,22 +102,15 @@ bool traverse(const FlatBvh& bvh, const Ray& ray, Interval interval, Leaf&& leaf
                 continue;
             }
         } else {
-            for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
-                if (leaf(k, interval)) {
-                    if (kAny) {
-                        count.items += k + 1 - node.first;  // the items tested
-                        return true;
-                    }
-                    found = true;
-                }
-            }
             count.items += node.count;
+            for (std::uint32_t k = node.first; k < node.first + node.count; ++k)
+                if (leaf(k, interval)) found = true;
         }
         // Next: the nearest postponed node still in front of the best hit.
         for (;;) {
             if (top == 0) return found;
             const auto [next, t] = stack[--top];
-            if (kAny || t <= widen_far(interval.max)) {
+            if (t <= widen_far(interval.max)) {
                 at = next;
                 break;
             }
@@ -129,14 +118,33 @@ bool traverse(const FlatBvh& bvh, const Ray& ray, Interval interval, Leaf&& leaf
     }
 }
 
-template <class Leaf>
-bool closest_hit(const FlatBvh& bvh, const Ray& ray, Interval interval, Leaf&& leaf) {
-    return traverse<false>(bvh, ray, interval, leaf);
-}
-
+// Is there any hit? Stops at the first one leaf(k, interval) reports; order does not
+// matter, so no distances are kept.
 template <class Leaf>
 bool any_hit(const FlatBvh& bvh, const Ray& ray, Interval interval, Leaf&& leaf) {
-    return traverse<true>(bvh, ray, interval, leaf);
+    if (bvh.nodes.empty()) return false;
+    TallyScope tally;
+    TraversalCount& count = tally.count;
+    const BoxRay r(ray);
+    const BvhNode* nodes = bvh.nodes.data();
+    std::uint32_t stack[kMaxBvhDepth + 2];
+    int top = 0;
+    stack[top++] = 0;
+    while (top > 0) {
+        const BvhNode& node = nodes[stack[--top]];
+        ++count.nodes;
+        if (enter(node, r, interval.min, interval.max) == kInfinity) continue;
+        if (node.leaf()) {
+            for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
+                ++count.items;
+                if (leaf(k, interval)) return true;
+            }
+        } else {
+            stack[top++] = node.first + 1;
+            stack[top++] = node.first;
+        }
+    }
+    return false;
 }
 
 }  // namespace rt
