@@ -22,6 +22,14 @@ namespace {
 // a stratum's edge may round into the next stratum by that much: both are right.
 constexpr Real kUlps = 4 * kEps;
 
+// Sample k of `count` in pixel (4, 9), asked for as the render loop asks: the sampler told
+// the pattern's strata, the sample started.
+Vec2 film(Sampler& sampler, int k, int count, const Antialiasing& aa) {
+    sampler.set_strata(count, pattern_side(count).value_or(0), strata_of(aa));
+    sampler.start_sample(k);
+    return camera_sample(4, 9, aa.filter, sampler).film;
+}
+
 }  // namespace
 
 TEST_CASE("14.1 stratified_point: sample k at offset u in stratum (k mod n, k div n)") {
@@ -104,11 +112,16 @@ TEST_CASE("14.2 tent_offset: worked values, monotone, and the tent's distributio
 TEST_CASE("camera_sample: the pixel centre, the strata, the regular grid, the tent") {
     Sampler sampler(7, 3);
     const Antialiasing box_random{};
-    CHECK(camera_sample(4, 9, 0, 1, box_random, sampler).film == Vec2(4.5, 9.5));
-    // Jittered, 16 samples: one in each quarter-by-quarter stratum of the pixel.
+    CHECK(film(sampler, 0, 1, box_random) == Vec2(4.5, 9.5));
+    CHECK(sampler.draws()[std::size_t(Dimension::pixel)] == 0);  // the centre draws nothing
+    // Jittered, 16 samples: one in each quarter-by-quarter stratum of the pixel, sample k in
+    // stratum k (the pixel's strata in order), at the place two numbers of the pixel
+    // dimension's stream give: a twin sampler drawing them itself finds the same points.
+    Sampler twin(7, 3);
     std::set<std::pair<int, int>> strata;
     for (int k = 0; k < 16; ++k) {
-        const Vec2 f = camera_sample(4, 9, k, 16, {PixelPattern::jittered, PixelFilter::box}, sampler).film;
+        const Vec2 f = film(sampler, k, 16, {PixelPattern::jittered, PixelFilter::box});
+        CHECK(f == Vec2(4, 9) + stratified_point(k, 4, twin.get2(Dimension::pixel)));
         CHECK(f.x >= 4);
         CHECK(f.x < 5);
         CHECK(f.y >= 9);
@@ -116,14 +129,17 @@ TEST_CASE("camera_sample: the pixel centre, the strata, the regular grid, the te
         strata.insert({int((f.x - 4) * 4), int((f.y - 9) * 4)});
     }
     CHECK(strata.size() == 16);
-    // Regular: the strata's centres, whatever the sampler.
-    CHECK(camera_sample(4, 9, 6, 16, {PixelPattern::regular, PixelFilter::box}, sampler).film ==
-          Vec2(4 + 2.5 / 4, 9 + 1.5 / 4));
+    // Random, 16 samples: two numbers each, anywhere in the pixel.
+    for (int k = 0; k < 16; ++k) CHECK(film(sampler, k, 16, box_random) == Vec2(4, 9) + twin.get2(Dimension::pixel));
+    CHECK(sampler.draws()[std::size_t(Dimension::pixel)] == 64);
+    // Regular: the strata's centres, whatever the sampler, and nothing drawn.
+    CHECK(film(sampler, 6, 16, {PixelPattern::regular, PixelFilter::box}) == Vec2(4 + 2.5 / 4, 9 + 1.5 / 4));
+    CHECK(sampler.draws()[std::size_t(Dimension::pixel)] == 64);
     // Tent: within one pixel of the centre, centred on it, and denser near it.
     double sum_x = 0, near = 0;
     const int n = 4096;
     for (int k = 0; k < n; ++k) {
-        const Vec2 f = camera_sample(4, 9, k, n, {PixelPattern::jittered, PixelFilter::tent}, sampler).film;
+        const Vec2 f = film(sampler, k, n, {PixelPattern::jittered, PixelFilter::tent});
         CHECK(std::abs(f.x - Real(4.5)) < 1);
         CHECK(std::abs(f.y - Real(9.5)) < 1);
         sum_x += double(f.x) - 4.5;

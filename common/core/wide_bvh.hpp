@@ -392,4 +392,19 @@ bool any_hit(const WideBvh<W>& bvh, const WideRay<W>& ray, Interval interval, Le
     return traverse<true>(bvh, ray, interval, leaf, fetch);
 }
 
+// Every leaf whose box the ray enters within `interval`, each once, in no order to rely on:
+// leaf(first, count, interval) is shown them all (CSG collects every crossing of a mesh).
+// It is the any-hit search with a leaf that never reports a hit, so nothing ends it early.
+template <int W, class Leaf, class Fetch>
+void for_each_leaf_entered(const WideBvh<W>& bvh, const WideRay<W>& ray, Interval interval, Leaf&& leaf,
+                           Fetch&& fetch) {
+    traverse<true>(
+        bvh, ray, interval,
+        [&](std::uint32_t first, std::uint32_t count, Interval& iv) {
+            leaf(first, count, iv);
+            return false;
+        },
+        fetch);
+}
+
 }  // namespace rt

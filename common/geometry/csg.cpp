@@ -100,7 +100,7 @@ SpanList mesh_spans(const Mesh& mesh, const Ray& ray) {
     const MeshAccel& a = mesh.accel();
     std::vector<HitRecord> crossings;
     const RayShear shear(ray);
-    any_hit(
+    for_each_leaf_entered(
         a.wide, WideRay<kMeshBvhWidth>(ray), line,
         [&](std::uint32_t b, std::uint32_t, Interval& iv) {
             for_each_hit(a.blocks[b], a.corners_of(b), shear, ray, iv,
@@ -108,7 +108,6 @@ SpanList mesh_spans(const Mesh& mesh, const Ray& ray) {
                              crossings.push_back(record(mesh, ray, MeshHit{h, index, c}, SurfaceRef{kNone, kNone}));
                              return false;  // every crossing, not the first
                          });
-            return false;
         },
         [&](std::uint32_t b) { prefetch(a.blocks[b]); });
     // The brute-force order (t, then triangle), so the result does not depend on the tree.

@@ -1,7 +1,7 @@
 #pragma once
 // Antialiasing (book §14, course §9.11.1): where a pixel's samples go (the pattern) and how
 // they are weighed into the pixel (the filter). stratified_point and tent_offset are the
-// chapter 14 exercises (solutions/ch14_antialiasing.cpp); camera_sample in render.hpp puts
+// chapter 14 exercises (solutions/ch14_antialiasing.cpp); camera_sample in strata.hpp puts
 // them together.
 #include "core/names.hpp"
 #include "core/real.hpp"

@@ -84,26 +84,6 @@ void check_budget(const RenderOptions& o) {
                                     " pattern takes n x n samples (1, 4, 9, 16, ...)");
 }
 
-CameraSample camera_sample(int i, int j, int k, int spp, const Antialiasing& aa, Sampler& sampler) {
-    const Vec2 corner{Real(i), Real(j)};
-    if (spp == 1 && aa.pattern == PixelPattern::random && aa.filter == PixelFilter::box)
-        return {corner + Vec2(Real(0.5))};
-    Vec2 u(0);
-    switch (aa.pattern) {
-        case PixelPattern::random:
-            u = sampler.get2(Dimension::pixel);
-            break;
-        case PixelPattern::regular:
-            u = stratified_point(k, *pattern_side(spp), Vec2(Real(0.5)));
-            break;
-        case PixelPattern::jittered:
-            u = stratified_point(k, *pattern_side(spp), sampler.get2(Dimension::pixel));
-            break;
-    }
-    if (aa.filter == PixelFilter::box) return {corner + u};
-    return {corner + Vec2(Real(0.5)) + Vec2(tent_offset(u.x), tent_offset(u.y))};
-}
-
 void lens_and_time(const View& view, bool moving, Sampler& sampler, CameraSample& sample) {
     if (view.has_lens()) sample.lens = lens_point(sample_square(sampler, Dimension::lens), view.lens);
     if (moving && view.shutter_open < view.shutter_close) {
@@ -157,7 +137,7 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
                 glm::dvec3 sum(0);
                 for (int k = 0; k < o.spp; ++k) {
                     sampler.start_sample(k);
-                    CameraSample cs = camera_sample(i, j, k, o.spp, o.antialiasing, sampler);
+                    CameraSample cs = camera_sample(i, j, o.antialiasing.filter, sampler);
                     lens_and_time(view, moving, sampler, cs);
                     const Ray ray = view.ray(cs);
                     counters.count(RayKind::camera);

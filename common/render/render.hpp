@@ -35,13 +35,6 @@ void check_budget(const RenderOptions& options);
 // sampler. Exceptions from the integrator (an unfinished exercise) reach the caller.
 RenderResult render(const Scene& scene, const RenderOptions& options);
 
-// Sample k of pixel (i, j) (j up from the bottom), from the sampler's pixel dimension. One
-// random sample per pixel with the box filter lands on the pixel centre, as in course §9.2;
-// otherwise the pattern places the sample in the unit square (regular and jittered need a
-// square spp: check_budget), and the filter turns that into a place on the film. Lens and
-// time stay at the pinhole and time 0 until a camera asks for them.
-CameraSample camera_sample(int i, int j, int k, int spp, const Antialiasing& aa, Sampler& sampler);
-
 // The rest of a camera sample (book §16, §18): a place on the lens when the camera has one,
 // and a time in the shutter interval when something in the scene moves; each drawn in its
 // own dimension, stratified and shuffled against the pixel's samples. Nothing is drawn for

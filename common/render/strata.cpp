@@ -1,7 +1,5 @@
 #include "render/strata.hpp"
 
-#include "render/antialiasing.hpp"
-
 namespace rt {
 
 Vec2 sample_square(Sampler& sampler, Dimension d) {
@@ -14,6 +12,15 @@ LineSample sample_line(Sampler& sampler, Dimension d) {
     if (!sampler.take_stratum(d)) return {0, 1, sampler.get1(d)};
     const int k = sampler.stratum(d);
     return {k, sampler.count(), sampler.strata() == Strata::centres ? Real(0.5) : sampler.get1(d)};
+}
+
+CameraSample camera_sample(int i, int j, PixelFilter filter, Sampler& sampler) {
+    const Vec2 corner{Real(i), Real(j)};
+    if (sampler.count() == 1 && sampler.strata() == Strata::none && filter == PixelFilter::box)
+        return {corner + Vec2(Real(0.5))};
+    const Vec2 u = sample_square(sampler, Dimension::pixel);
+    if (filter == PixelFilter::box) return {corner + u};
+    return {corner + Vec2(Real(0.5)) + Vec2(tent_offset(u.x), tent_offset(u.y))};
 }
 
 }  // namespace rt

@@ -1,9 +1,12 @@
 #pragma once
-// Samples in the dimensions after the pixel's (book §15.2): the light, the lens, the
-// shutter, the glossy lobe. Each is stratified as the pixel's samples are (the pattern of
-// RenderOptions: random, regular or jittered), and its strata are shuffled against the
-// pixel's, the course's remedy for samples that would otherwise move in step.
+// Where a pixel's samples go in each of their dimensions (book §14.2, §15.2): the pixel
+// itself, the light, the lens, the shutter, the glossy lobe. Every dimension is stratified
+// the one way the Sampler was told (the pattern of RenderOptions: random, regular or
+// jittered); the pixel's strata are taken in order, and every other dimension's are
+// shuffled against them, the course's remedy for samples that would otherwise move in step.
 #include "core/sampler.hpp"
+#include "render/antialiasing.hpp"
+#include "render/camera.hpp"
 
 namespace rt {
 
@@ -21,5 +24,13 @@ struct LineSample {
     Real u;
 };
 LineSample sample_line(Sampler& sampler, Dimension d);
+
+// The film position of the current sample of pixel (i, j) (j up from the bottom): the pixel
+// dimension's point of the unit square (sample_square, so the pattern is the Sampler's, as
+// for every other dimension) through the filter, as pbrt's GetCameraSample puts a sampler
+// and a filter together. A pixel of one random sample with the box filter takes its centre,
+// as in course §9.2, and draws nothing. Lens and time stay at the pinhole and time 0 until a
+// camera asks for them (lens_and_time in render.hpp).
+CameraSample camera_sample(int i, int j, PixelFilter filter, Sampler& sampler);
 
 }  // namespace rt
