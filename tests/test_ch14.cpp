@@ -2,7 +2,7 @@
 // worked values; the tent's distribution against its formula; where camera_sample puts a
 // pixel's samples for each pattern and filter; a pixel cut by an edge against the area it
 // covers, computed by integration; and jittering beating random sampling at equal samples.
-// (The statistical test of tools/ztest.hpp, library code, is tested in test_library_parts.cpp.)
+// (The statistical test of tools/ztest.hpp, library code, is tested in test_statistics.cpp.)
 #include "io/scene_file.hpp"
 #include "render/render.hpp"
 #include "support.hpp"

@@ -2,7 +2,7 @@
 // strata; the swept box of a moving sphere holds it at every time; every search structure
 // returns brute force's hit for rays at random times; a ray crossed by a moving ball sees it
 // for the share of the exposure the geometry predicts, and so does a floor point its shadow
-// crosses. (That nothing moving draws no time is tested in test_library_parts.cpp.)
+// crosses. (That nothing moving draws no time is tested in test_render.cpp.)
 #include "io/scene_file.hpp"
 #include "render/render.hpp"
 #include "support.hpp"

@@ -4,6 +4,8 @@
 #include "support.hpp"
 #include "support/source_dir.hpp"
 
+#include <cmath>
+
 #include <nlohmann/json.hpp>
 
 #include <unistd.h>
@@ -138,5 +140,47 @@ TEST_CASE("the book's scene-format examples load, and the schema is valid JSON")
     const auto parsed = nlohmann::json::parse(schema, nullptr, false);
     CHECK_FALSE(parsed.is_discarded());
     CHECK(parsed.contains("properties"));
+}
+}  // TEST_SUITE("common")
+
+TEST_SUITE("common") {
+// Chapters 16 and 18: what needs none of their exercises (the stubs must fail every test of
+// a chapter's own program).
+TEST_CASE("scene files: a lens needs a perspective camera and an aperture") {
+    CHECK_THROWS_WITH(load_scene_text(R"({"camera": {"projection": "orthographic", "eye": [0, 0, 3],
+        "target": [0, 0, 0], "aperture": 0.2}, "surfaces": []})",
+                                      "o.json", "."),
+                      doctest::Contains("a lens (aperture > 0) needs a perspective camera"));
+    CHECK_THROWS_WITH(load_scene_text(R"({"camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "lens": "disk"},
+        "surfaces": []})",
+                                      "l.json", "."),
+                      doctest::Contains("a lens needs an aperture > 0"));
+    CHECK_THROWS_WITH(load_scene_text(R"({"camera": {"eye": [0, 0, 3], "target": [0, 0, 0], "aperture": 1,
+        "lens": "hexagon"}, "surfaces": []})",
+                                      "h.json", "."),
+                      doctest::Contains("/camera/lens: unknown lens \"hexagon\" (expected square or disk)"));
+}
+
+TEST_CASE("scene values are range-checked as stored: colours as float, coordinates within 1e8") {
+    const auto error = [](const std::string& surfaces, const std::string& extra = "") {
+        try {
+            load_scene_text(R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0]}, )" + extra + R"("surfaces": [)" +
+                                surfaces + "]}",
+                            "t.json", ".");
+        } catch (const SceneError& e) {
+            return std::string(e.what());
+        }
+        return std::string("no error");
+    };
+    CHECK(error(R"({"type": "sphere", "center": [0, 0, 0], "radius": 1e39})") ==
+          "t.json:1:106: /surfaces/0/radius: length must be in 1e-6..1e8, not 1e39");
+    CHECK(error("", R"("background": [1e39, 0, 0], )") ==
+          "t.json:1:68: /background/0: radiance must be in 0..1000000, not 1e39");
+    CHECK(error("", R"("ambient": [0, 3.5e38, 0], )") ==
+          "t.json:1:68: /ambient/1: radiance must be in 0..1000000, not 3.5e38");
+    CHECK(error(R"({"type": "sphere", "center": [0, 0, 1e8], "radius": 1e8})") == "no error");
+    // A mesh's vertices are checked after scale and translate.
+    CHECK(error(R"({"type": "soup", "center": [1e8, 0, 0], "size": 1e8, "scale": 1, "count": 3})")
+              .find("coordinate must be in -1e8..1e8") != std::string::npos);
 }
 }  // TEST_SUITE("common")

@@ -1,5 +1,5 @@
 #pragma once
-// What the CSG tests share (tests/test_ch13.cpp, tests/test_library_parts.cpp): span lists
+// What the CSG tests share (tests/test_ch13.cpp, tests/test_geometry.cpp): span lists
 // written as (in, out) pairs of t, and read back as such.
 #include "geometry/shape.hpp"
 

@@ -1,0 +1,97 @@
+// The core layer's parts no exercise implements: the limits table and its messages, text
+// made safe for one line, unit vectors at the ends of the range, and the Sampler's streams.
+#include "core/limits.hpp"
+#include "core/sampler.hpp"
+#include "core/text.hpp"
+#include "geometry/limits.hpp"
+#include "render/strata.hpp"
+#include "support.hpp"
+
+#include <cmath>
+#include <limits>
+#include <string>
+#include <vector>
+
+using namespace rt;
+
+TEST_SUITE("common") {
+TEST_CASE("Sampler: only a sample's first point in a dimension takes its stratum") {
+    // A second glossy bounce or a second area light in the same sample gets an independent
+    // point: one tied to the first stratum would bias a path that depends on both.
+    Sampler s(4, 2);
+    s.set_strata(16, 4, Strata::jittered);
+    s.start_sample(3);
+    CHECK(s.take_stratum(Dimension::glossy));
+    CHECK_FALSE(s.take_stratum(Dimension::glossy));
+    CHECK_FALSE(s.take_stratum(Dimension::glossy));
+    CHECK(s.take_stratum(Dimension::light));  // each dimension its own
+    s.start_sample(4);
+    CHECK(s.take_stratum(Dimension::glossy));  // and each sample
+    Sampler plain(4, 2);
+    plain.set_strata(10, 0, Strata::jittered);  // 10 is not a square: no strata at all
+    CHECK(plain.strata() == Strata::none);
+    plain.start_sample(0);
+    CHECK_FALSE(plain.take_stratum(Dimension::lens));
+}
+
+TEST_CASE("Sampler: a second point in a dimension is independent of the first") {
+    // Two glossy points per sample, 16 jittered samples per pixel, over 2,000 pixels: if the
+    // second took the first's stratum, x1 and x2 would share a quarter of [0, 1), and E[x1 x2]
+    // would be about the mean square of the four stratum centres, 0.328; independent, 0.25.
+    double sum = 0;
+    int n = 0;
+    for (std::uint64_t pixel = 0; pixel < 2000; ++pixel) {
+        Sampler s(9, pixel);
+        s.set_strata(16, 4, Strata::jittered);
+        for (int k = 0; k < 16; ++k) {
+            s.start_sample(k);
+            const Vec2 a = sample_square(s, Dimension::glossy), b = sample_square(s, Dimension::glossy);
+            sum += double(a.x) * double(b.x);
+            ++n;
+        }
+    }
+    // 32,000 products of spread about 0.2: the mean is 0.25 to within 0.004 (3.5 sigma).
+    CHECK(std::abs(sum / n - 0.25) < 0.004);
+}
+
+TEST_CASE("limits: one table, messages that name the limit, numbers written as people write them") {
+    CHECK(limits::refuse(limits::icosphere_subdivisions, 9) == "icosphere subdivisions must be in 0..7, not 9");
+    CHECK(limits::refuse(limits::length, -1) == "length must be in 1e-6..1e8, not -1");
+    CHECK(limits::refuse(limits::radiance, 1e39) == "radiance must be in 0..1000000, not 1e39");
+    CHECK(limits::refuse(limits::field_of_view, 180) == "field of view must be in 0.001..179.9 degrees, not 180");
+    CHECK(limits::describe(limits::triangle_vertices) == "must be 3");
+    CHECK_FALSE(limits::contains(limits::coordinate, std::nan("")));
+    for (const auto& r : limits::all) {
+        CAPTURE(r.name);
+        CHECK(r.min <= r.max);
+        // Every value a scene may hold stays finite and, where it must be positive, non-zero
+        // as a float: colours are float whatever Real is.
+        if (*r.schema) {
+            CHECK(std::isfinite(float(r.max)));
+            CHECK(std::isfinite(float(r.min)));
+            if (r.min > 0) CHECK(float(r.min) > 0);
+        }
+    }
+    // The products the ray tests form stay far from float's range: (2 * max)^3.
+    CHECK(std::pow(2 * limits::coordinate.max, 3) < 1e-10 * std::numeric_limits<float>::max());
+}
+
+TEST_CASE("one_line: control characters become escapes, UTF-8 stays") {
+    CHECK(one_line("a\nb\tc\x1b[31m") == "a\\nb\\tc\\x1b[31m");
+    CHECK(one_line("caf\xc3\xa9") == "caf\xc3\xa9");
+    CHECK(one_line(std::string("\0x", 2)) == "\\x00x");
+}
+
+TEST_CASE("unit_vector: any finite non-zero vector, huge or tiny, in float as in double") {
+    const Real big = std::numeric_limits<Real>::max() / 4, tiny = std::numeric_limits<Real>::denorm_min() * 8;
+    for (const Vec3& v :
+         {Vec3(0, -big, 0), Vec3(big, big, big), Vec3(0, tiny, 0), Vec3(tiny, -tiny, 0), Vec3(3, 4, 0)}) {
+        CAPTURE(v);
+        const Vec3 u = unit_vector(v);
+        CHECK(std::abs(glm::length(u) - 1) < 4 * std::numeric_limits<Real>::epsilon());
+        CHECK(glm::dot(u, v) > 0);
+    }
+    CHECK(unit_vector(Vec3(3, 4, 0)) == Vec3(Real(0.6), Real(0.8), 0));
+    CHECK(unit_vector(Vec3(0)) == Vec3(0));
+}
+}  // TEST_SUITE("common")

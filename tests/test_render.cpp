@@ -1,0 +1,95 @@
+// The render loop's guarantees: a budget refused before any work, only finite pixels, exact
+// averages of identical samples, and no random numbers drawn for what a scene does not use.
+#include "io/scene_file.hpp"
+#include "render/integrators.hpp"
+#include "render/render.hpp"
+#include "support.hpp"
+
+#include <cmath>
+#include <limits>
+#include <memory>
+#include <string>
+
+using namespace rt;
+
+TEST_SUITE("common") {
+TEST_CASE("--stats: nothing moving draws no time sample") {
+    const char* text = R"({"camera": {"eye": [0, 0, 3], "target": [0, 0, 0]},
+      "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1}]})";
+    Scene scene = load_scene_text(text, "still.json", ".");
+    scene.build_accel(AccelKind::fast);
+    CHECK_FALSE(scene.surfaces.moves());
+    RenderOptions o;
+    o.width = 8;
+    o.height = 6;
+    o.spp = 4;
+    const RenderResult r = render(scene, o);
+    CHECK(r.counters.draws[std::size_t(Dimension::time)] == 0);
+    CHECK(r.counters.draws[std::size_t(Dimension::lens)] == 0);
+    CHECK(r.counters.draws[std::size_t(Dimension::light)] == 0);
+}
+
+TEST_CASE("render budget: image size and samples refused before any work") {
+    RenderOptions o;
+    CHECK_NOTHROW(check_budget(o));
+    o.width = 16384;
+    o.height = 2048;
+    CHECK_NOTHROW(check_budget(o));
+    o.height = 2049;
+    CHECK_THROWS_WITH_AS(check_budget(o), "--width x --height: image size must be in 1..33554432 pixels, not 33570816",
+                         std::invalid_argument);
+    o.height = 2048;
+    o.spp = 129;
+    CHECK_THROWS_AS(check_budget(o), std::invalid_argument);
+}
+
+namespace {
+// An integrator that returns NaN or infinity on some pixels, as a broken exercise might.
+class Broken : public Integrator {
+public:
+    Color Li(const Scene&, const Ray& ray, TraceContext&) const override {
+        if (ray.direction.x > 0) return Color(std::numeric_limits<float>::quiet_NaN(), 0, 0);
+        if (ray.direction.y > 0) return Color(std::numeric_limits<float>::infinity());
+        return Color(0.5f);
+    }
+};
+}  // namespace
+
+TEST_CASE("the render loop writes only finite pixels and counts the samples it left out") {
+    Scene scene;
+    scene.camera.eye = Vec3(0, 0, 5);
+    scene.camera.target = Vec3(0);
+    scene.integrator = std::make_shared<Broken>();
+    RenderOptions o;
+    o.width = 8;
+    o.height = 6;
+    o.spp = 2;
+    const RenderResult r = render(scene, o);
+    std::size_t finite = 0;
+    for (const Color& c : r.image.pixels) finite += std::isfinite(c.r + c.g + c.b);
+    CHECK(finite == r.image.pixels.size());
+    // Right half (x > 0): NaN; top-left quarter: infinite; both left out of their pixel.
+    CHECK(r.counters.nonfinite_samples > 0);
+    CHECK(r.counters.nonfinite_samples < std::uint64_t(8 * 6 * 2));
+    CHECK(r.image.at(0, 5) == Color(0.5f));  // bottom left: every sample finite
+}
+
+TEST_CASE("the average of identical samples is that sample, at the most samples per pixel allowed") {
+    // A float sum of 65536 copies of 0.7 comes out 7e-4 off (the sum's step outgrows the
+    // sample): each pixel must be the background exactly, every channel, bit for bit.
+    Scene scene = load_scene_text(R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0]},
+        "background": [0.6, 0.7, 0.85], "surfaces": [{"type": "sphere", "center": [0, 0, 50], "radius": 1}]})",
+                                  "background.json", ".");
+    REQUIRE(scene.background == Color(0.6f, 0.7f, 0.85f));
+    RenderOptions o;
+    o.width = 2;
+    o.height = 2;
+    o.spp = int(limits::samples_per_pixel.max);
+    const RenderResult r = render(scene, o);
+    for (const Color& c : r.image.pixels) {
+        CHECK(c.r == 0.6f);
+        CHECK(c.g == 0.7f);
+        CHECK(c.b == 0.85f);
+    }
+}
+}  // TEST_SUITE("common")
