@@ -12,25 +12,20 @@
 
 namespace rt {
 
-// @book basis
 Basis camera_basis(const Vec3& view_direction, const Vec3& up) {
     RT_STUDENT_EXERCISE(1, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 1.1 | camera_basis | book §1.2
     throw NotImplemented("exercise 1.1 (camera_basis) is not done yet: see book §1.2");
     // @end
 }
-// @book-end
 
-// @book window
 Vec2 window_point(Real x, Real y, int nx, int ny, const Window& win) {
     RT_STUDENT_EXERCISE(1, 2);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 1.2 | window_point | book §1.3
     throw NotImplemented("exercise 1.2 (window_point) is not done yet: see book §1.3");
     // @end
 }
-// @book-end
 
-// @book rays
 Ray orthographic_ray(const Vec3& eye, const Basis& uvw, const Vec2& uv) {
     RT_STUDENT_EXERCISE(1, 3);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 1.3 | orthographic_ray | book §1.4
@@ -44,6 +39,5 @@ Ray perspective_ray(const Vec3& eye, const Basis& uvw, Real d, const Vec2& uv) {
     throw NotImplemented("exercise 1.4 (perspective_ray) is not done yet: see book §1.4");
     // @end
 }
-// @book-end
 
 }  // namespace rt

@@ -15,31 +15,25 @@
 
 namespace rt {
 
-// @book textbook
 bool sphere_roots_textbook(const Ray& ray, const Vec3& center, Real radius, Real& t_near, Real& t_far) {
     RT_STUDENT_EXERCISE(2, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 2.1 | sphere_roots_textbook | book §2.2
     throw NotImplemented("exercise 2.1 (sphere_roots_textbook) is not done yet: see book §2.2");
     // @end
 }
-// @book-end
 
-// @book stable
 bool sphere_roots(const Ray& ray, const Vec3& center, Real radius, Real& t_near, Real& t_far) {
     RT_STUDENT_EXERCISE(2, 2);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 2.2 | sphere_roots | book §2.3
     throw NotImplemented("exercise 2.2 (sphere_roots) is not done yet: see book §2.3");
     // @end
 }
-// @book-end
 
-// @book hit
 bool hit(const Sphere& sphere, const Ray& ray, Interval interval, SphereHit& result) {
     RT_STUDENT_EXERCISE(2, 3);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 2.3 | hit(Sphere) | book §2.4
     throw NotImplemented("exercise 2.3 (hit(Sphere)) is not done yet: see book §2.4");
     // @end
 }
-// @book-end
 
 }  // namespace rt

@@ -17,16 +17,13 @@
 
 namespace rt {
 
-// @book cramer
 bool ray_triangle(const Ray& ray, const Vec3& A, const Vec3& B, const Vec3& C, Interval interval, TriangleHit& result) {
     RT_STUDENT_EXERCISE(3, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 3.1 | ray_triangle | book §3.2
     throw NotImplemented("exercise 3.1 (ray_triangle) is not done yet: see book §3.2");
     // @end
 }
-// @book-end
 
-// @book watertight
 bool ray_triangle_watertight(const Ray& ray, const Vec3& A, const Vec3& B, const Vec3& C, Interval interval,
                              TriangleHit& result) {
     RT_STUDENT_EXERCISE(3, 2);  // tells the grader this ran (core/exercise.hpp)
@@ -34,6 +31,5 @@ bool ray_triangle_watertight(const Ray& ray, const Vec3& A, const Vec3& B, const
     throw NotImplemented("exercise 3.2 (ray_triangle_watertight) is not done yet: see book §3.4");
     // @end
 }
-// @book-end
 
 }  // namespace rt

@@ -15,31 +15,25 @@
 
 namespace rt {
 
-// @book axes
 std::array<int, 2> projection_axes(const Vec3& n) {
     RT_STUDENT_EXERCISE(4, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 4.1 | projection_axes | book §4.2
     throw NotImplemented("exercise 4.1 (projection_axes) is not done yet: see book §4.2");
     // @end
 }
-// @book-end
 
-// @book crossing
 bool inside_polygon_2d(const std::vector<Vec2>& polygon, const Vec2& p) {
     RT_STUDENT_EXERCISE(4, 2);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 4.2 | inside_polygon_2d | book §4.3
     throw NotImplemented("exercise 4.2 (inside_polygon_2d) is not done yet: see book §4.3");
     // @end
 }
-// @book-end
 
-// @book polygon-hit
 bool hit(const Polygon& polygon, const Ray& ray, Interval interval, PolygonHit& result) {
     RT_STUDENT_EXERCISE(4, 3);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 4.3 | hit(Polygon) | book §4.4
     throw NotImplemented("exercise 4.3 (hit(Polygon)) is not done yet: see book §4.4");
     // @end
 }
-// @book-end
 
 }  // namespace rt

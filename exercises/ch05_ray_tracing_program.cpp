@@ -16,16 +16,13 @@
 
 namespace rt {
 
-// @book closest
 bool SurfaceList::hit(const Ray& ray, Interval interval, HitRecord& rec) const {
     RT_STUDENT_EXERCISE(5, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 5.1 | SurfaceList::hit | book §5.2
     throw NotImplemented("exercise 5.1 (SurfaceList::hit) is not done yet: see book §5.2");
     // @end
 }
-// @book-end
 
-// @book shading
 Color lambert(const Color& diffuse, const Color& light, const Vec3& n, const Vec3& l) {
     RT_STUDENT_EXERCISE(5, 2);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 5.2 | lambert | book §5.4
@@ -40,6 +37,5 @@ Color blinn_phong_highlight(const Color& specular, float exponent, const Color& 
     throw NotImplemented("exercise 5.3 (blinn_phong_highlight) is not done yet: see book §5.4");
     // @end
 }
-// @book-end
 
 }  // namespace rt

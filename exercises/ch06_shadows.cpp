@@ -19,16 +19,13 @@
 
 namespace rt {
 
-// @book offset
 Vec3 offset_origin(const Vec3& p, const Vec3& n) {
     RT_STUDENT_EXERCISE(6, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 6.1 | offset_origin | book §6.3
     throw NotImplemented("exercise 6.1 (offset_origin) is not done yet: see book §6.3");
     // @end
 }
-// @book-end
 
-// @book direct
 Color direct_light(const Scene& scene, const Light& light, int light_index, const ShadePoint& sp,
                    TraceContext& context) {
     RT_STUDENT_EXERCISE(6, 2);  // tells the grader this ran (core/exercise.hpp)
@@ -36,6 +33,5 @@ Color direct_light(const Scene& scene, const Light& light, int light_index, cons
     throw NotImplemented("exercise 6.2 (direct_light) is not done yet: see book §6.2");
     // @end
 }
-// @book-end
 
 }  // namespace rt

@@ -13,13 +13,11 @@
 
 namespace rt {
 
-// @book reflect
 Vec3 reflect(const Vec3& d, const Vec3& n) {
     RT_STUDENT_EXERCISE(7, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 7.1 | reflect | book §7.1
     throw NotImplemented("exercise 7.1 (reflect) is not done yet: see book §7.1");
     // @end
 }
-// @book-end
 
 }  // namespace rt

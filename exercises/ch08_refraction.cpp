@@ -15,31 +15,25 @@
 
 namespace rt {
 
-// @book refract
 bool refract(const Vec3& d, const Vec3& n, Real n_from, Real n_to, Vec3& t) {
     RT_STUDENT_EXERCISE(8, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 8.1 | refract | book §8.1
     throw NotImplemented("exercise 8.1 (refract) is not done yet: see book §8.1");
     // @end
 }
-// @book-end
 
-// @book schlick
 Real schlick(Real cosine, Real ior) {
     RT_STUDENT_EXERCISE(8, 2);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 8.2 | schlick | book §8.2
     throw NotImplemented("exercise 8.2 (schlick) is not done yet: see book §8.2");
     // @end
 }
-// @book-end
 
-// @book beer
 Color beer(const Color& attenuation, Real distance) {
     RT_STUDENT_EXERCISE(8, 3);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 8.3 | beer | book §8.3
     throw NotImplemented("exercise 8.3 (beer) is not done yet: see book §8.3");
     // @end
 }
-// @book-end
 
 }  // namespace rt

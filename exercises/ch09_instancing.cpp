@@ -13,31 +13,25 @@
 
 namespace rt {
 
-// @book object-ray
 Ray object_ray(const Affine& to_object, const Ray& ray) {
     RT_STUDENT_EXERCISE(9, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 9.1 | object_ray | book §9.2
     throw NotImplemented("exercise 9.1 (object_ray) is not done yet: see book §9.2");
     // @end
 }
-// @book-end
 
-// @book normal
 Vec3 world_normal(const Affine& to_object, const Vec3& n) {
     RT_STUDENT_EXERCISE(9, 2);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 9.2 | world_normal | book §9.3
     throw NotImplemented("exercise 9.2 (world_normal) is not done yet: see book §9.3");
     // @end
 }
-// @book-end
 
-// @book box
 Box transform_box(const Affine& to_world, const Box& box) {
     RT_STUDENT_EXERCISE(9, 3);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 9.3 | transform_box | book §9.4
     throw NotImplemented("exercise 9.3 (transform_box) is not done yet: see book §9.4");
     // @end
 }
-// @book-end
 
 }  // namespace rt

@@ -16,40 +16,32 @@
 
 namespace rt {
 
-// @book slab
 bool hit_box(const Box& box, const Ray& ray, Interval interval) {
     RT_STUDENT_EXERCISE(10, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 10.1 | hit_box | book §10.1
     throw NotImplemented("exercise 10.1 (hit_box) is not done yet: see book §10.1");
     // @end
 }
-// @book-end
 
-// @book sorted
 BvhRef build_sorted(BvhBuilder& builder, std::span<std::uint32_t> primitives, int axis) {
     RT_STUDENT_EXERCISE(10, 2);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 10.2 | build_sorted | book §10.3
     throw NotImplemented("exercise 10.2 (build_sorted) is not done yet: see book §10.3");
     // @end
 }
-// @book-end
 
-// @book midpoint
 BvhRef build_midpoint(BvhBuilder& builder, std::span<std::uint32_t> primitives, int axis) {
     RT_STUDENT_EXERCISE(10, 3);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 10.3 | build_midpoint | book §10.3
     throw NotImplemented("exercise 10.3 (build_midpoint) is not done yet: see book §10.3");
     // @end
 }
-// @book-end
 
-// @book traversal
 bool Bvh::hit_node(const SurfaceList& surfaces, BvhRef ref, const Ray& ray, Interval interval, HitRecord& best) const {
     RT_STUDENT_EXERCISE(10, 4);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 10.4 | Bvh::hit_node | book §10.4
     throw NotImplemented("exercise 10.4 (Bvh::hit_node) is not done yet: see book §10.4");
     // @end
 }
-// @book-end
 
 }  // namespace rt

@@ -16,22 +16,18 @@
 
 namespace rt {
 
-// @book start
 bool Grid::start(const Ray& ray, Interval interval, GridWalk& walk) const {
     RT_STUDENT_EXERCISE(11, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 11.1 | Grid::start | book §11.2
     throw NotImplemented("exercise 11.1 (Grid::start) is not done yet: see book §11.2");
     // @end
 }
-// @book-end
 
-// @book walk
 bool Grid::walk(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& best) const {
     RT_STUDENT_EXERCISE(11, 2);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 11.2 | Grid::walk | book §11.3
     throw NotImplemented("exercise 11.2 (Grid::walk) is not done yet: see book §11.3");
     // @end
 }
-// @book-end
 
 }  // namespace rt

@@ -16,22 +16,18 @@
 
 namespace rt {
 
-// @book four-cases
 bool Bsp::hit_node(const SurfaceList& surfaces, BspRef ref, const Ray& ray, Interval interval, HitRecord& best) const {
     RT_STUDENT_EXERCISE(12, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 12.1 | Bsp::hit_node | book §12.2
     throw NotImplemented("exercise 12.1 (Bsp::hit_node) is not done yet: see book §12.2");
     // @end
 }
-// @book-end
 
-// @book midpoint
 BspRef build_midpoint(BspBuilder& builder, std::span<const std::uint32_t> items, const Box& cell, int depth) {
     RT_STUDENT_EXERCISE(12, 2);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 12.2 | build_midpoint | book §12.4
     throw NotImplemented("exercise 12.2 (build_midpoint) is not done yet: see book §12.4");
     // @end
 }
-// @book-end
 
 }  // namespace rt

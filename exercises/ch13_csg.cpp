@@ -15,22 +15,18 @@
 
 namespace rt {
 
-// @book combine
 SpanList combine(CsgOp op, const SpanList& a, const SpanList& b) {
     RT_STUDENT_EXERCISE(13, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 13.1 | combine | book §13.2
     throw NotImplemented("exercise 13.1 (combine) is not done yet: see book §13.2");
     // @end
 }
-// @book-end
 
-// @book mesh-spans
 SpanList mesh_spans(const std::vector<HitRecord>& crossings, const Vec3& direction, Real same_t) {
     RT_STUDENT_EXERCISE(13, 2);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 13.2 | mesh_spans | book §13.3
     throw NotImplemented("exercise 13.2 (mesh_spans) is not done yet: see book §13.3");
     // @end
 }
-// @book-end
 
 }  // namespace rt

@@ -16,22 +16,18 @@
 
 namespace rt {
 
-// @book stratified
 Vec2 stratified_point(int k, int n, Vec2 u) {
     RT_STUDENT_EXERCISE(14, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 14.1 | stratified_point | book §14.2
     throw NotImplemented("exercise 14.1 (stratified_point) is not done yet: see book §14.2");
     // @end
 }
-// @book-end
 
-// @book tent
 Real tent_offset(Real u) {
     RT_STUDENT_EXERCISE(14, 2);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 14.2 | tent_offset | book §14.3
     throw NotImplemented("exercise 14.2 (tent_offset) is not done yet: see book §14.3");
     // @end
 }
-// @book-end
 
 }  // namespace rt

@@ -16,22 +16,18 @@
 
 namespace rt {
 
-// @book shuffle
 void fisher_yates(std::vector<std::uint32_t>& order, pcg32& random) {
     RT_STUDENT_EXERCISE(15, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 15.1 | fisher_yates | book §15.2
     throw NotImplemented("exercise 15.1 (fisher_yates) is not done yet: see book §15.2");
     // @end
 }
-// @book-end
 
-// @book light-point
 Vec3 light_point(const Light& light, const Vec2& uv) {
     RT_STUDENT_EXERCISE(15, 2);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 15.2 | light_point | book §15.1
     throw NotImplemented("exercise 15.2 (light_point) is not done yet: see book §15.1");
     // @end
 }
-// @book-end
 
 }  // namespace rt

@@ -16,16 +16,13 @@
 
 namespace rt {
 
-// @book lens-point
 Vec2 lens_point(const Vec2& u, LensShape shape) {
     RT_STUDENT_EXERCISE(16, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 16.1 | lens_point | book §16.2
     throw NotImplemented("exercise 16.1 (lens_point) is not done yet: see book §16.2");
     // @end
 }
-// @book-end
 
-// @book thin-lens
 Ray thin_lens_ray(const Vec3& eye, const Basis& uvw, Real d, const Vec2& uv, Real aperture, Real focus,
                   const Vec2& lens) {
     RT_STUDENT_EXERCISE(16, 2);  // tells the grader this ran (core/exercise.hpp)
@@ -33,6 +30,5 @@ Ray thin_lens_ray(const Vec3& eye, const Basis& uvw, Real d, const Vec2& uv, Rea
     throw NotImplemented("exercise 16.2 (thin_lens_ray) is not done yet: see book §16.1");
     // @end
 }
-// @book-end
 
 }  // namespace rt

@@ -15,13 +15,11 @@
 
 namespace rt {
 
-// @book glossy
 Vec3 glossy_direction(const Vec3& r, Real width, const Vec2& uv) {
     RT_STUDENT_EXERCISE(17, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 17.1 | glossy_direction | book §17.1
     throw NotImplemented("exercise 17.1 (glossy_direction) is not done yet: see book §17.1");
     // @end
 }
-// @book-end
 
 }  // namespace rt

@@ -17,22 +17,18 @@
 
 namespace rt {
 
-// @book shutter
 Real shutter_time(int k, int n, Real u, Real open, Real close) {
     RT_STUDENT_EXERCISE(18, 1);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 18.1 | shutter_time | book §18.2
     throw NotImplemented("exercise 18.1 (shutter_time) is not done yet: see book §18.2");
     // @end
 }
-// @book-end
 
-// @book swept-box
 Box swept_box(const Sphere& sphere) {
     RT_STUDENT_EXERCISE(18, 2);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 18.2 | swept_box | book §18.1
     throw NotImplemented("exercise 18.2 (swept_box) is not done yet: see book §18.1");
     // @end
 }
-// @book-end
 
 }  // namespace rt

@@ -9,6 +9,7 @@
 //   throw NotImplemented("exercise 2.2 (sphere_roots) is not done yet: see book §2.3");
 // with, just above the first marker, RT_STUDENT_EXERCISE(2, 2): the student's copy records
 // that it ran, so the grader can name it when a test through it fails (core/exercise.hpp).
+// The book's excerpt markers ("// @book NAME", "// @book-end") are left out of the copies.
 // Each student copy also gets one region of its own, "// @helpers" ... "// @end", before
 // `namespace rt {`: the student's #includes and helper functions, kept like any body.
 //
@@ -67,6 +68,9 @@ std::string trim(const std::string& s) {
 const std::regex kBegin(R"(^(\s*)// @exercise\s+(\S+)\s*\|\s*([^|]+?)\s*\|\s*(.+?)\s*$)");
 const std::regex kEnd(R"(^\s*// @end\s*$)");
 const std::regex kHelpers(R"(^\s*// @helpers\s*$)");
+// The book's excerpt markers (tools/book.cpp reads them from solutions/ only): the student
+// copies go without them.
+const std::regex kBookMarker(R"(^\s*// @book(\s+\S+|-end)\s*$)");
 const std::regex kLooksLikeMarker(R"(^\s*//\s*@\s*(exercise|helpers))");
 const std::string kHelpersId = "helpers";
 // The helper region's text until the student writes there.
@@ -145,6 +149,7 @@ Parsed generate(const fs::path& source, const std::string& text) {
     bool helpers = false;
     while (std::getline(in, line)) {
         std::smatch m;
+        if (std::regex_match(line, kBookMarker)) continue;
         if (std::regex_match(line, m, kBegin)) {
             const std::string id = m[2].str();
             const auto dot = id.find('.');

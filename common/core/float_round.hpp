@@ -1,12 +1,23 @@
 #pragma once
 // Rounding a Real to the float on either side of it, for structures that store boxes in
 // float (core/flat_bvh.hpp, core/wide_bvh.hpp) and must round them outwards, never inwards.
+#include "core/opaque.hpp"
 #include "core/real.hpp"
 
 #include <bit>
 #include <cstdint>
 
 namespace rt {
+
+// x rounded to the nearest float, as a Real. Written out because GCC 12.2 (Debian 12's)
+// miscompiles the plain `Real(float(x))` when it vectorises two or more of them side by
+// side: the narrowing and the widening are folded away and x comes back unrounded (wrong
+// code from -O2 on; tests/test_common.cpp checks this). opaque() hides the float from the folding.
+inline Real round_to_float(Real x) {
+    float f = float(x);
+    opaque(f);
+    return Real(f);
+}
 
 // Rounding a Real to a float below or above it. Stepping the bits by one is nextafter for
 // the finite floats that can need it (an infinity converts exactly), without a libm call

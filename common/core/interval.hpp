@@ -15,15 +15,6 @@ struct Interval {
     bool contains(Real t) const { return min <= t && t <= max; }
 };
 
-// The same interval, its bounds made two registers. A query that copies its Interval whole
-// (to a callee, into a struct) gets it from GCC as one 16-byte load just after the two
-// 8-byte stores that spilled it, a failed store forward that stalls the query (a tenth of
-// a mesh query that misses); the empty asm breaks the pairing.
-inline Interval in_registers(Interval iv) {
-    asm("" : "+x"(iv.min), "+x"(iv.max));
-    return iv;
-}
-
 // The far end of a search past the best hit so far, widened by a few units in the last
 // place. A primitive's own test decides "t <= max" after rounding, so a second primitive at
 // exactly the best distance (a ray through an edge two triangles share) could be kept or

@@ -29,16 +29,6 @@ inline Vec3 unit_vector(const Vec3& v) {
     return s / glm::sqrt(glm::dot(s, s));
 }
 
-// x rounded to the nearest float, as a Real. Written out because GCC 12.2 (Debian 12's)
-// miscompiles the plain `Real(float(x))` when it vectorises two or more of them side by
-// side: the narrowing and the widening are folded away and x comes back unrounded (wrong
-// code from -O2 on; tests/test_common.cpp checks this). The empty asm hides the float from the folding.
-inline Real round_to_float(Real x) {
-    float f = float(x);
-    asm("" : "+x"(f));
-    return Real(f);
-}
-
 inline const char* real_name() {
     return sizeof(Real) == sizeof(float) ? "float" : "double";
 }

@@ -11,8 +11,7 @@
 #include "core/flat_bvh.hpp"
 #include "core/float_round.hpp"
 #include "core/search_memory.hpp"
-
-#include <immintrin.h>
+#include "core/wide_lanes.hpp"
 
 #include <bit>
 #include <cstddef>
@@ -110,49 +109,8 @@ constexpr std::size_t far_offset(int a) {
     return near_offset<W, kOctant ^ 7u>(a);  // the far side is the near one of the opposite octant
 }
 
-// W floats as one vector of the compiler's (GCC's and Clang's vector_size). Spelled out per
-// width: GCC's link-time optimiser cannot stream a vector size that depends on W.
-template <int W>
-struct FloatLanes;
-template <>
-struct FloatLanes<4> {
-    using type = float __attribute__((vector_size(16)));
-};
-template <>
-struct FloatLanes<8> {
-    using type = float __attribute__((vector_size(32)));
-};
-
-// Bit c set where lane c of a comparison's result is true.
-inline unsigned lane_mask(FloatLanes<4>::type m) {
-    return unsigned(_mm_movemask_ps(__m128(m)));
-}
-inline unsigned lane_mask(const FloatLanes<8>::type& m) {
-#ifdef __AVX__
-    return unsigned(_mm256_movemask_ps(__m256(m)));
-#else
-    FloatLanes<4>::type half[2];
-    std::memcpy(half, &m, sizeof half);
-    return lane_mask(half[0]) | lane_mask(half[1]) << 4;
-#endif
-}
-
-// v = x in every lane. (An out-parameter: a 32-byte vector returned by value draws GCC's
-// ABI warning in builds without AVX.)
-template <class F>
-inline void splat(F& v, float x) {
-    if constexpr (sizeof(F) == 16) {
-        v = F(_mm_set1_ps(x));
-    } else {
-#ifdef __AVX__
-        v = F(_mm256_set1_ps(x));
-#else
-        const __m128 half = _mm_set1_ps(x);
-        std::memcpy(&v, &half, 16);
-        std::memcpy(reinterpret_cast<char*>(&v) + 16, &half, 16);
-#endif
-    }
-}
+// What follows computes in lanes, and so is compiled one way per choice of core/wide_lanes.hpp.
+inline namespace RTLAB_LANES_NAMESPACE {
 
 // The ray as the node test reads it: each value in all W lanes, made once per query, so
 // that a visit takes them as operands instead of spreading them out again. Ahead of the
@@ -247,7 +205,7 @@ template <unsigned kOctant, int W>
 inline int push_children(const WideNode<W>& node, unsigned mask, const typename FloatLanes<W>::type& t,
                          const LaneMask<W>& entered, std::uint32_t* refs, float* ts, std::uint32_t& nearest) {
     constexpr int octant_shift = 3 * int(kOctant);
-#ifdef __AVX2__
+#ifdef RTLAB_LANES_AVX2
     if constexpr (W == 8) {
         const __m256i order =
             _mm256_srli_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.order)), octant_shift);
@@ -406,5 +364,7 @@ void for_each_leaf_entered(const WideBvh<W>& bvh, const WideRay<W>& ray, Interva
         },
         fetch);
 }
+
+}  // namespace RTLAB_LANES_NAMESPACE
 
 }  // namespace rt

@@ -1,5 +1,6 @@
 #include "geometry/mesh.hpp"
 
+#include "core/opaque.hpp"
 #include "geometry/limits.hpp"
 
 #include <algorithm>
