@@ -89,7 +89,6 @@ Mesh::Mesh(MeshData data) {
     if (data.triangles.empty()) throw std::invalid_argument("mesh: every triangle is degenerate");
     for (const auto& t : data.triangles)
         for (std::uint32_t v : t) box_.expand(data.positions[v]);
-    search_box_ = grown_by_rounding(box_);
     data_ = std::make_shared<const MeshData>(std::move(data));
     accel_ = build_accel(*data_);
 }
@@ -105,7 +104,7 @@ struct MeshRay {
 
     // `wide` stays empty when the ray misses the mesh's box: then nothing else is made.
     MeshRay(const Ray& r, const Mesh& mesh, Interval interval) : ray(r), inv(Real(1) / r.direction) {
-        if (might_hit(mesh.search_box(), ray, inv, interval)) wide.emplace(ray, inv);
+        if (might_hit(mesh.box(), ray, inv, interval)) wide.emplace(ray, inv);
     }
 
     const RayShear& shear() {

@@ -84,16 +84,12 @@ public:
     Mesh smoothed() const;
     std::size_t dropped_degenerate() const { return dropped_; }
     const Box& box() const { return box_; }
-    // What a ray is culled by: the box grown by the rounding of the hits inside (core/box.hpp),
-    // so the mesh finds what a structure over its triangles finds.
-    const Box& search_box() const { return search_box_; }
 
 private:
     std::shared_ptr<const MeshData> data_;
     std::shared_ptr<const MeshAccel> accel_;
     std::size_t dropped_ = 0;
     Box box_;
-    Box search_box_;
 };
 
 // The closest hit through the mesh's BVH; at equal t the lower triangle index, so the
