@@ -54,6 +54,9 @@ Bvh::Bvh(const SurfaceList& surfaces, BvhBuild how) : primitives_(primitives_of(
             break;
     }
     nodes_ = builder.take_nodes();
+    // The exercises build with the primitives' own boxes; the search tests each node's box
+    // grown by the rounding of the hits inside it (core/box.hpp), like every structure.
+    for (CourseBvhNode& n : nodes_) n.box = grown_by_rounding(n.box);
 }
 
 const CourseBvhNode& Bvh::node(BvhRef ref) const {

@@ -5,7 +5,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <limits>
 #include <stdexcept>
 
 namespace rt {
@@ -43,11 +42,10 @@ Grid::Grid(const SurfaceList& surfaces, Real density) : primitives_(primitives_o
         cell_size_[a] = e[a] / Real(n_[a]);
     }
     // The pad: a ten-thousandth of a cell, and never less than the rounding in where a hit is
-    // computed, which grows with the coordinates (16 units in the last place of the largest):
-    // far from the origin, in float, that decides (at 1e6: 2 units of 1/16).
-    const Vec3 reach = glm::max(glm::abs(bounds_.min), glm::abs(bounds_.max));
-    rounding_ = Real(16) * std::numeric_limits<Real>::epsilon() * std::max({reach.x, reach.y, reach.z});
-    pad_ = std::max(Real(1e-4) * std::min(cell_size_.x, std::min(cell_size_.y, cell_size_.z)), rounding_);
+    // computed, which grows with the coordinates (core/box.hpp): far from the origin, in
+    // float, that decides (at 1e6: 2 units of 1/16).
+    const Real rounding = hit_rounding(bounds_);
+    pad_ = std::max(Real(1e-4) * std::min(cell_size_.x, std::min(cell_size_.y, cell_size_.z)), rounding);
 
     // Every primitive goes into every cell its box (grown by twice the pad) overlaps: two
     // passes, counting and then filling, so the lists sit in one array.
@@ -93,8 +91,7 @@ bool Grid::clip(const Ray& ray, Interval& interval) const {
     // that hit is computed a rounding error in or out, and far from the origin that error is
     // a unit in the last place of the coordinates. Such a ray is clipped to the box grown by
     // the rounding; start() clamps its entry point into the nearest cell.
-    const Box grown{bounds_.min - Vec3(rounding_), bounds_.max + Vec3(rounding_)};
-    return clip_to_box(grown, ray, interval);
+    return clip_to_box(grown_by_rounding(bounds_), ray, interval);
 }
 
 Real Grid::cell_exit(const Ray& ray, const GridWalk& walk) const {

@@ -88,7 +88,6 @@ private:
     std::array<int, 3> n_{1, 1, 1};
     Vec3 cell_size_{1};
     Real pad_ = 0;                      // in space: how far past a plane a cell's primitives reach
-    Real rounding_ = 0;                 // in space: the rounding in a hit's coordinates (at most pad_)
     std::vector<std::uint32_t> first_;  // cell c lists items_[first_[c] .. first_[c + 1])
     std::vector<std::uint32_t> items_;  // primitive numbers
 };

@@ -107,9 +107,12 @@ struct Builder {
             bounds.expand(boxes[out.items[k]]);
             centre_bounds.expand(centres[out.items[k]]);
         }
-        for (int a = 0; a < 3; ++a) {  // float bounds containing the Real ones: a box only grows
-            out.nodes[at].lo[a] = float_below(bounds.min[a]);
-            out.nodes[at].hi[a] = float_above(bounds.max[a]);
+        // Stored grown by the rounding of the hits inside (the heuristic weighs the boxes as
+        // they are), and in float bounds containing the Real ones: a box only grows.
+        const Box search = grown_by_rounding(bounds);
+        for (int a = 0; a < 3; ++a) {
+            out.nodes[at].lo[a] = float_below(search.min[a]);
+            out.nodes[at].hi[a] = float_above(search.max[a]);
         }
         const std::uint32_t n = end - begin;
         if (n == 1) return leaf(out.nodes[at], begin, end);
