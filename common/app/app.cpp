@@ -241,9 +241,9 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
                    "how samples are weighed: " + kFilterNames.list() + " (default: the scene's)")
         ->check(one_of(kFilterNames));
     cli.add_flag("--stats", inv.stats, "print render statistics as one JSON line");
-    cli.set_version_flag("--version",
-                         std::string(id_ + " (rtlab " + build_info::version + ", Real=" + real_name() + ", " + build_info::track +
-                                     " track, exercises from solutions/: " + build_info::from_solutions + ")"));
+    cli.set_version_flag("--version", std::string(id_ + " (rtlab " + build_info::version + ", Real=" + real_name() +
+                                                  ", " + build_info::track + " track, exercises from solutions/: " +
+                                                  build_info::from_solutions + ")"));
 
     const auto usage = [&](const std::string& message) {
         std::fprintf(stderr, "%s: error: %s\n", id_.c_str(), one_line(message).c_str());

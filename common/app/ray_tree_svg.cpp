@@ -140,8 +140,8 @@ void draw_shape(const Shape& shape, const Affine& to_world, const PageProjection
         [&](const Cuboid& box) {
             std::vector<Vec3> corners;
             for (int k = 0; k < 8; ++k)
-                corners.push_back(Vec3(k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y,
-                                       k & 4 ? box.max.z : box.min.z));
+                corners.push_back(
+                    Vec3(k & 1 ? box.max.x : box.min.x, k & 2 ? box.max.y : box.min.y, k & 4 ? box.max.z : box.min.z));
             hull_of(corners);
         },
         [&](const Csg& csg) {  // both operands, as outlines

@@ -60,10 +60,10 @@ std::uint32_t leaf_count(const Shape& shape) {
 // The nearest CSG object inside a shape (itself, or under instances), if any.
 const Csg* csg_in(const Shape& shape) {
     return match(
-        shape, [](const Csg& c) -> const Csg* { return &c; },
-        [](const Instance& in) { return csg_in(in.base()); }, [](const Sphere&) -> const Csg* { return nullptr; },
-        [](const Triangle&) -> const Csg* { return nullptr; }, [](const Polygon&) -> const Csg* { return nullptr; },
-        [](const Mesh&) -> const Csg* { return nullptr; }, [](const Cuboid&) -> const Csg* { return nullptr; });
+        shape, [](const Csg& c) -> const Csg* { return &c; }, [](const Instance& in) { return csg_in(in.base()); },
+        [](const Sphere&) -> const Csg* { return nullptr; }, [](const Triangle&) -> const Csg* { return nullptr; },
+        [](const Polygon&) -> const Csg* { return nullptr; }, [](const Mesh&) -> const Csg* { return nullptr; },
+        [](const Cuboid&) -> const Csg* { return nullptr; });
 }
 
 // An operand's spans, owned by the CSG above: parts numbered from `first_leaf`, material
