@@ -107,7 +107,7 @@ TEST_CASE("portable lanes: splat puts the value in every lane, the sign of zero 
     splat(v, -0.0f);
     for (int c = 0; c < 8; ++c) CHECK(std::signbit(v[c]));
     splat(v, 3.5f);
-    for (int c = 0; c < 8; ++c) CHECK(v[c] == 3.5f);
+    for (int c = 0; c < 8; ++c) CHECK(float(v[c]) == 3.5f);
 }
 
 TEST_CASE("portable lanes: the wide BVH's searches find the nearest box brute force finds") {
