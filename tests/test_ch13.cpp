@@ -566,7 +566,7 @@ TEST_CASE("far from the origin, out to the coordinate limit: the same image with
     // rounded outside it (the BSPs lost them). Whatever rounding makes of the hits, every
     // structure must find the same ones as brute force (the BVHs lost a few in float: a ray
     // that missed a node's box by a rounding error while the floor's own test rounded to a
-    // hit, until their boxes grew by that rounding, core/box.hpp's grown_by_rounding).
+    // hit, until their boxes grew by that rounding, core/hit_rounding.hpp's grown_by_rounding).
     const auto scene_at = [](const Vec3& o, double size, const Vec3& eye) {
         const auto at = [&](double x, double y, double z) {
             return "[" + std::to_string(double(o.x) + x * size) + ", " + std::to_string(double(o.y) + y * size) + ", " +

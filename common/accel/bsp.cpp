@@ -154,7 +154,7 @@ Bsp::Bsp(const SurfaceList& surfaces, BspBuild how, std::size_t leaf_size) : pri
     }
     // The pad covers rounding in where a hit and a plane crossing are computed: 256 units in
     // the last place of the scene's largest coordinate (16 times a hit's alone, hit_rounding
-    // in core/box.hpp), and never less than 2^-20 of it. In float the first decides (3e-5 of
+    // in core/hit_rounding.hpp), and never less than 2^-20 of it. In float the first decides (3e-5 of
     // the size); in double the floor does (1e-6): far more than double's rounding needs, at
     // the price of a few more copies next to planes.
     const Vec3 reach = glm::max(glm::abs(bounds_.min), glm::abs(bounds_.max));

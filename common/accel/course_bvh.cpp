@@ -3,6 +3,7 @@
 #include "accel/tree_depth.hpp"
 
 #include "core/flat_bvh.hpp"
+#include "core/hit_rounding.hpp"
 
 #include <algorithm>
 #include <numeric>

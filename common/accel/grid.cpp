@@ -1,6 +1,7 @@
 #include "accel/grid.hpp"
 
 #include "core/flat_bvh.hpp"
+#include "core/hit_rounding.hpp"
 #include "core/limits.hpp"
 
 #include <algorithm>
@@ -42,7 +43,7 @@ Grid::Grid(const SurfaceList& surfaces, Real density) : primitives_(primitives_o
         cell_size_[a] = e[a] / Real(n_[a]);
     }
     // The pad: a ten-thousandth of a cell, and never less than the rounding in where a hit is
-    // computed, which grows with the coordinates (core/box.hpp): far from the origin, in
+    // computed, which grows with the coordinates (core/hit_rounding.hpp): far from the origin, in
     // float, that decides (at 1e6: 2 units of 1/16).
     const Real rounding = hit_rounding(bounds_);
     pad_ = std::max(Real(1e-4) * std::min(cell_size_.x, std::min(cell_size_.y, cell_size_.z)), rounding);

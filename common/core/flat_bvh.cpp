@@ -1,5 +1,6 @@
 #include "core/flat_bvh.hpp"
 #include "core/float_round.hpp"
+#include "core/hit_rounding.hpp"
 
 #include <algorithm>
 #include <array>

@@ -21,29 +21,16 @@ namespace {
         one_line("mesh " + name + (line ? ":" + std::to_string(line) : std::string()) + ": " + message));
 }
 
-// A coordinate as OBJ files write it (a sign, digits with an optional point, an optional
-// exponent) that is finite in double. tinyobjloader reads anything else as 0 ("nan", "inf",
-// "abc", "0x1p3") and 1e400 as infinity, without a word.
+// A coordinate that is a number, finite in double, and nothing else. tinyobjloader reads
+// anything else as 0 ("nan", "abc", "0x1p3") and 1e400 as infinity, without a word.
+// from_chars takes the number's whole text or says where it stopped; it refuses 1e400 as
+// out of range and reads "nan" and "inf", which isfinite then refuses.
 bool finite_number(const std::string& token) {
-    std::size_t k = token[0] == '+' || token[0] == '-' ? 1 : 0;
-    const std::size_t start = token[0] == '+' ? 1 : 0;  // from_chars takes a '-', not a '+'
-    const auto digits = [&] {
-        const std::size_t from = k;
-        while (k < token.size() && std::isdigit(static_cast<unsigned char>(token[k]))) ++k;
-        return k - from;
-    };
-    std::size_t mantissa = digits();
-    if (k < token.size() && token[k] == '.') ++k, mantissa += digits();
-    if (mantissa == 0) return false;
-    if (k < token.size() && (token[k] == 'e' || token[k] == 'E')) {
-        ++k;
-        if (k < token.size() && (token[k] == '+' || token[k] == '-')) ++k;
-        if (digits() == 0) return false;
-    }
-    if (k != token.size()) return false;
+    const bool plus = token[0] == '+' && token.size() > 1 && token[1] != '-';  // from_chars takes '-', not '+'
+    const char* end = token.data() + token.size();
     double value = 0;
-    const auto [end, error] = std::from_chars(token.data() + start, token.data() + token.size(), value);
-    return error == std::errc() && end == token.data() + token.size() && std::isfinite(value);
+    const auto [stop, error] = std::from_chars(token.data() + (plus ? 1 : 0), end, value);
+    return error == std::errc() && stop == end && std::isfinite(value);
 }
 
 // The three coordinates of a "v" or "vn" line (what follows them, a w or a colour, is not
