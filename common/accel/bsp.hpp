@@ -12,6 +12,7 @@
 
 namespace rt {
 
+// @book bsp-node
 // A node. An inner node cuts its cell by the plane where coordinate `axis` equals `split`:
 // `left` holds what lies below the plane, `right` what lies above. A leaf lists the
 // primitives items[first .. last) of its tree.
@@ -23,9 +24,11 @@ struct BspNode {
 
     bool leaf() const { return axis == kLeaf; }
 };
+// @book-end
 
 using BspRef = std::uint32_t;  // a node's index
 
+// @book bsp-builder
 // What a build works with: the primitives' boxes, the nodes and leaf lists made so far, and
 // the rules that end it.
 class BspBuilder {
@@ -77,6 +80,7 @@ inline Box above_plane(Box cell, int axis, Real split) {
 // which primitives lie under each side, the leaves and the depth. The numbering of the
 // nodes is free.
 BspRef build_midpoint(BspBuilder& builder, std::span<const std::uint32_t> items, const Box& cell, int depth);
+// @book-end
 
 // The surface-area-heuristic build: the plane of least expected cost (a node visit plus the
 // primitives tested on each side, weighted by the chance a ray through the cell meets that
@@ -98,6 +102,7 @@ public:
     // grown by the pad, its start kept; false if the ray misses that box (or the tree is empty).
     bool reach(const Ray& ray, Interval& interval) const;
 
+    // @book bsp-search
     // Exercise 12.1: the course's four cases. Searches the subtree `ref` for the closest hit
     // in the interval (the part of the ray the search has reached this node with), keeping
     // it in best; true if it found one. The near side is the side of the plane where the
@@ -121,6 +126,7 @@ public:
 
     BspRef root() const { return root_; }
     const BspNode& node(BspRef ref) const;  // counts the visit
+    // @book-end
     std::span<const std::uint32_t> items(const BspNode& leaf) const {
         return std::span<const std::uint32_t>(items_).subspan(leaf.left, leaf.right - leaf.left);
     }

@@ -21,6 +21,7 @@ namespace rt {
 // Never a hit: the empty box, a NaN end of the interval, a box wholly outside the interval.
 bool hit_box(const Box& box, const Ray& ray, Interval interval);
 
+// @book bvh-node
 // A child: a node's index, or (top bit set) a primitive's.
 using BvhRef = std::uint32_t;
 inline constexpr BvhRef kPrimitiveBit = 1u << 31;
@@ -32,6 +33,7 @@ struct CourseBvhNode {
     Box box;
     BvhRef left, right;
 };
+// @book-end
 
 // What a build works with: the primitives' boxes and centres, and the nodes made so far.
 class BvhBuilder {
@@ -77,6 +79,7 @@ public:
     bool occluded(const SurfaceList& surfaces, const Ray& ray, Interval interval) const;
     Box bounding_box() const { return box(root_); }
 
+    // @book bvh-search
     // Exercise 10.4: the course's recursive search below `ref`. `best` holds the best hit
     // so far (its t is the interval's far end); hit_primitive() keeps a closer one there.
     bool hit_node(const SurfaceList& surfaces, BvhRef ref, const Ray& ray, Interval interval, HitRecord& best) const;
@@ -85,6 +88,7 @@ public:
     bool hit_primitive(const SurfaceList& surfaces, BvhRef ref, const Ray& ray, Interval interval,
                        HitRecord& best) const;
     const CourseBvhNode& node(BvhRef ref) const;  // counts the box test it is read for
+    // @book-end
     Box box(BvhRef ref) const;
 
     std::size_t node_count() const { return nodes_.size(); }

@@ -10,6 +10,7 @@
 
 namespace rt {
 
+// @book grid-walk
 // Where a walk through the grid is: the current cell, the direction of the steps along
 // each axis, and where the ray crosses the current cell's next plane along each axis.
 struct GridWalk {
@@ -18,6 +19,7 @@ struct GridWalk {
     Vec3 t_max{kInfinity};      // the t of the next plane along each axis (infinity: never)
     Real t_end = kInfinity;     // where the ray leaves the grid, or its interval ends
 };
+// @book-end
 
 class Grid {
 public:
@@ -28,6 +30,7 @@ public:
     bool occluded(const SurfaceList& surfaces, const Ray& ray, Interval interval) const;
     Box bounding_box() const { return bounds_; }
 
+    // @book grid-start
     // Exercise 11.1: where a ray's walk starts. Clips the interval to the grid (clip());
     // false if the ray misses it. Otherwise the cell holding the point where the clipped
     // interval starts (its index clamped to the grid: that point may lie on a far face, or a
@@ -58,6 +61,7 @@ public:
     Real boundary(int axis, int k) const {
         return k == n_[axis] ? bounds_.max[axis] : bounds_.min[axis] + Real(k) * cell_size_[axis];
     }
+    // @book-end
     // Where the ray leaves the walk's current cell, padded a little (book §11.3): a hit
     // there belongs to this cell, since every primitive near a plane sits on both sides.
     Real cell_exit(const Ray& ray, const GridWalk& walk) const;
@@ -83,10 +87,14 @@ private:
         return (std::size_t(c[2]) * std::size_t(n_[1]) + std::size_t(c[1])) * std::size_t(n_[0]) + std::size_t(c[0]);
     }
 
+    // @book grid-members
+    // What start() reads besides boundary(): the grid's box, its cells along each axis, and
+    // the size of one cell.
     std::vector<Primitive> primitives_;
     Box bounds_;
     std::array<int, 3> n_{1, 1, 1};
     Vec3 cell_size_{1};
+    // @book-end
     Real pad_ = 0;                      // in space: how far past a plane a cell's primitives reach
     std::vector<std::uint32_t> first_;  // cell c lists items_[first_[c] .. first_[c + 1])
     std::vector<std::uint32_t> items_;  // primitive numbers
