@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The loop a student lives in, timed the way a student meets it (book §0.3):
+# The loop a student lives in, timed the way a student meets it (book §B.6):
 #   1. ./lab run on a fresh clone, with an empty compiler cache
 #   2. ./lab run again, nothing changed
 #   3. ./lab grade, every chapter, after a one-line change inside an exercise body (8.1)

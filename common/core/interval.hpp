@@ -5,6 +5,7 @@
 
 namespace rt {
 
+// @book interval
 // The range of ray parameters a query accepts: [min, max], both ends included, the
 // course's [t0, t1]. A closest-hit search shrinks max as it finds hits.
 struct Interval {
@@ -14,6 +15,7 @@ struct Interval {
     // False for NaN: a NaN t is never a hit.
     bool contains(Real t) const { return min <= t && t <= max; }
 };
+// @book-end
 
 // The far end of a search past the best hit so far, widened by a few units in the last
 // place. A primitive's own test decides "t <= max" after rounding, so a second primitive at

@@ -3,6 +3,7 @@
 
 namespace rt {
 
+// @book ray
 // p(t) = e + t d. The direction is deliberately *not* normalised: instancing transforms
 // rays into object space, where the length of d changes, and every hit routine must still
 // return the t of the original ray.
@@ -13,5 +14,6 @@ struct Ray {
 
     Vec3 at(Real t) const { return origin + t * direction; }
 };
+// @book-end
 
 }  // namespace rt

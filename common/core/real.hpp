@@ -13,6 +13,7 @@ using Real = float;
 using Real = double;
 #endif
 
+// @book vec3
 using Vec2 = glm::vec<2, Real, glm::defaultp>;
 using Vec3 = glm::vec<3, Real, glm::defaultp>;
 using Color = glm::vec3;  // linear RGB
@@ -28,6 +29,7 @@ inline Vec3 unit_vector(const Vec3& v) {
     const Vec3 s = v / m;
     return s / glm::sqrt(glm::dot(s, s));
 }
+// @book-end
 
 inline const char* real_name() {
     return sizeof(Real) == sizeof(float) ? "float" : "double";

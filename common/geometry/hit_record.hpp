@@ -17,6 +17,7 @@ struct SurfaceRef {
     MaterialId material = 0;  // 0: the scene's default material
 };
 
+// @book hit-record
 // Everything a successful query reports. Always built whole, by one library function per
 // shape kind (`record`), and assigned in one piece: no field can survive from an earlier,
 // farther hit on another surface.
@@ -36,6 +37,7 @@ struct HitRecord {
     Real beta = 0;
     Real gamma = 0;
 };
+// @book-end
 
 // The one order in which every search ranks hits, so that brute force and every
 // acceleration structure return the same hit: the nearer first; at the same distance the
