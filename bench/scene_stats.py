@@ -72,18 +72,22 @@ def notes(scene, results, same):
     if same is not None:
         out.append(f"All {len(results)} give the same image, bit for bit." if same else
                    f"The {len(results)} images are not all the same, bit for bit.")
-    if "bsp" in r and "bvh-sah" in r:
+    if "bsp" in r and "bvh-sah" in r and "fast" in r:
         p = r["bsp"][1] / r["bvh-sah"][1]
         b = r["bsp"][2].get("bytes", 0) / max(1, r["bvh-sah"][2].get("bytes", 0))
         out.append(f"The SAH tree (`bsp`) tests {p:.1f} times as many primitives per ray as the BVH built by the "
-                   f"same heuristic (`bvh-sah`), in {b:.1f} times the memory.")
-    if "bsp" in r and "bsp-midpoint" in r:
-        less = r["bsp"][1] < r["bsp-midpoint"][1]
-        out.append(f"It tests {'fewer' if less else 'more'} primitives per ray than the midpoint tree "
-                   f"({r['bsp'][1]:.1f} against {r['bsp-midpoint'][1]:.1f}).")
-    if "grid" in r and "bsp" in r:
-        less = r["bsp"][1] < r["grid"][1]
-        out.append(f"It tests {'fewer' if less else 'more'} than the grid's cells hand it ({r['grid'][1]:.1f}).")
+                   f"same heuristic (`bvh-sah`), in {b:.1f} times the memory, and "
+                   f"{r['bsp'][1] / r['fast'][1]:.1f} times as many as `fast`.")
+    others = [k for k in ("bsp-midpoint", "grid") if k in r]
+    if "bsp" in r and others:
+        fewer = [k for k in others if r["bsp"][1] < r[k][1]]
+        more = [k for k in others if k not in fewer]
+        parts = []
+        if fewer:
+            parts.append("fewer than " + " and ".join(f"`{k}`" for k in fewer))
+        if more:
+            parts.append("at least as many as " + " and ".join(f"`{k}`" for k in more))
+        out.append("It tests " + ", but ".join(parts) + ".")
     return " ".join(out)
 
 
