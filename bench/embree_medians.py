@@ -2,8 +2,11 @@
 
 Reads the runs' outputs and prints, for each input and row (primary, shadow, primary with
 the HitRecord) and each thread count, the median lab/Embree ratio with the lowest and
-highest of the runs, then the lowest median of each row against the targets issue 10
-sets: 0.8 of Embree's primary-ray throughput and 0.6 of its shadow-ray throughput.
+highest of the runs; the same for the primary rays by kind (one thread, from --by-class:
+rays that miss the mesh's box, rays that enter it and miss, rays that hit); then the range
+of each row's medians over all inputs, and the lowest against the targets issue 10 sets: 0.8
+of Embree's primary-ray throughput and 0.6 of its shadow-ray throughput. The book quotes
+these lines and no other numbers of the comparison (book §10.7).
 """
 
 import re
@@ -13,7 +16,8 @@ import sys
 TARGETS = {"primary": 0.8, "shadow": 0.6}
 
 ratios = {}  # (input, row) -> {threads: [ratio per run]}
-inputs, rows = [], []
+kinds = {}  # (input, kind) -> [lab speed / Embree speed per run], one thread
+inputs, rows, kind_names = [], [], []
 for path in sys.argv[1:]:
     current = None
     with open(path) as f:
@@ -23,6 +27,12 @@ for path in sys.argv[1:]:
                 current = m.group(1)
                 if current not in inputs:
                     inputs.append(current)
+                continue
+            m = re.match(r"^  (miss the box|enter, miss|hit) +\d+ +[\d.]+ +[\d.]+ +([\d.]+)$", line)
+            if m and current:
+                if m.group(1) not in kind_names:
+                    kind_names.append(m.group(1))
+                kinds.setdefault((current, m.group(1)), []).append(float(m.group(2)))
                 continue
             m = re.match(r"^  (primary|shadow|primary, HitRecord) +([12]) +[\d.]+ +[\d.]+ +([\d.]+)$", line)
             if m and current:
@@ -35,6 +45,7 @@ runs = len(sys.argv) - 1
 print(f"lab/Embree over {runs} runs, one process each: median (lowest-highest)")
 print(f"  {'input':22} {'rays':20} {'1 thread':>18} {'2 threads':>18}")
 worst = {}  # row -> (median, input, threads)
+medians = {}  # row -> [median per input and thread count]
 for name in inputs:
     for row in rows:
         cells = []
@@ -44,10 +55,29 @@ for name in inputs:
                 cells.append(f"{'-':>18}")
                 continue
             median = statistics.median(values)
+            medians.setdefault(row, []).append(median)
             cells.append(f"{median:.2f} ({min(values):.2f}-{max(values):.2f})".rjust(18))
             if row in TARGETS and (row not in worst or median < worst[row][0]):
                 worst[row] = (median, name, threads)
         print(f"  {name:22} {row:20} {cells[0]} {cells[1]}")
+if kinds:
+    print(f"primary rays by kind, 1 thread, lab speed / Embree's over {runs} runs: median (lowest-highest)")
+    print(f"  {'input':22} " + " ".join(f"{k:>18}" for k in kind_names))
+    for name in inputs:
+        cells = []
+        for kind in kind_names:
+            values = kinds.get((name, kind), [])
+            if values:
+                median = statistics.median(values)
+                medians.setdefault(kind, []).append(median)
+                cells.append(f"{median:.2f} ({min(values):.2f}-{max(values):.2f})".rjust(18))
+            else:
+                cells.append(f"{'-':>18}")
+        print(f"  {name:22} " + " ".join(cells))
+print("range of the medians over the inputs (and thread counts):")
+for row in rows + kind_names:
+    if medians.get(row):
+        print(f"  {row:20} {min(medians[row]):.2f}-{max(medians[row]):.2f}")
 for row, target in TARGETS.items():
     if row in worst:
         median, name, threads = worst[row]

@@ -4,7 +4,7 @@
 // so with 4 KiB pages nearly every visit on a big mesh also needs a page translation the
 // TLB does not hold. An array of 2 MiB or more is therefore placed on a 2 MiB boundary and
 // the kernel asked to back it with huge pages (madvise, which Linux's default "madvise"
-// setting for transparent huge pages honours); book §10.7 measures what that gains on the
+// setting for transparent huge pages honours); book §C.2 and §C.3 record what that gained on the
 // dragon. Smaller arrays, and systems that decline, get ordinary memory: only speed depends
 // on it.
 #include <sys/mman.h>

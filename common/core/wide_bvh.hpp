@@ -295,7 +295,7 @@ bool traverse_from(const WideBvh<W>& bvh, const WideRay<W>& r, Interval interval
             if (mask != 0) {
                 const int n = push_children<kOctant>(node, mask, t, entered, refs + top, ts + top, ref);
                 // The children postponed are asked for whole now (on a big mesh each is a
-                // likely trip to memory; book §10.7 measures asking for only the next two).
+                // likely trip to memory; book §C.2 records what asking for only the next two cost).
                 // The one followed is read at once anyway.
                 for (int i = top; i < top + n - 1; ++i) {
                     const std::uint32_t child = refs[i];
