@@ -27,6 +27,7 @@
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -47,6 +48,11 @@ std::string number(double v, int digits) {
     // A typographic minus: "−0.5" reads better than "-0.5" in a label.
     if (!s.empty() && s[0] == '-') s = "\u2212" + s.substr(1);
     return s;
+}
+
+double degrees_between(const rt::Vec3& a, const rt::Vec3& b) {
+    const double c = double(glm::dot(rt::unit_vector(a), rt::unit_vector(b)));
+    return std::acos(std::clamp(c, -1.0, 1.0)) * 180 / M_PI;
 }
 
 }  // namespace figures
