@@ -42,10 +42,10 @@ Canvas barycentric(const rt::Fields& in) {
         if (rt::ray_triangle(down, a, b, c, rt::Interval{0, rt::kInfinity}, h)) {
             if (decompose) {
                 const rt::Vec3 along_b = a + h.beta * (b - a);
-                cv.arrow(flat(a), flat(along_b), Ink::camera);
-                cv.arrow(flat(along_b), flat(down.at(h.t)), Ink::refracted);
-                cv.label(0.5 * (flat(a) + flat(along_b)), "β(b − a)", Ink::camera, 0, -22, Anchor::middle);
-                cv.label(0.5 * (flat(along_b) + flat(down.at(h.t))), "γ(c − a)", Ink::refracted, 8, 0);
+                cv.arrow(flat(a), flat(along_b), Ink::axis);
+                cv.arrow(flat(along_b), flat(down.at(h.t)), Ink::axis);
+                cv.label(0.5 * (flat(a) + flat(along_b)), "β(b − a)", Ink::axis, 0, -22, Anchor::middle);
+                cv.label(0.5 * (flat(along_b) + flat(down.at(h.t))), "γ(c − a)", Ink::axis, 8, 0);
             }
             cv.dot(flat(down.at(h.t)), Ink::hit);
             cv.label(flat(down.at(h.t)), "β = " + number(double(h.beta), 2) + ", γ = " + number(double(h.gamma), 2),

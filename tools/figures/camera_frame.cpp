@@ -34,11 +34,11 @@ Canvas camera_frame(const rt::Fields& in) {
 
     const P2 e = view(eye);
     c.line(e, view(eye - d * uvw.w), Ink::guide, Stroke::dashed);
-    c.label(view(eye - rt::Real(0.5) * d * uvw.w), "d", Ink::guide, 2, 8);
+    c.label(view(eye - rt::Real(0.5) * d * uvw.w), "d", Ink::axis, 0, 8, Anchor::middle);
     const rt::Ray ray = rt::perspective_ray(eye, uvw, d, rt::window_point(i + 0.5, j + 0.5, nx, ny, win));
     c.arrow(e, view(ray.at(reach)), Ink::camera);
     c.dot(view(ray.at(1)), Ink::hit);
-    c.label(view(ray.at(1)), "s (t = 1)", Ink::hit, 8, 8);
+    c.label(view(ray.at(1)), "s (t = 1)", Ink::hit, 10, -22, Anchor::start, true);
     c.label(view(ray.at(reach)), "pixel (" + std::to_string(i) + ", " + std::to_string(j) + ")'s ray", Ink::camera, 6,
             6);
     c.arrow(e, view(eye + axis * uvw.u), Ink::axis);

@@ -56,10 +56,8 @@ Canvas camera_rays(const rt::Fields& in) {
         c.dot(page(eye), Ink::hit);
         c.label(page(eye), "e", Ink::hit, -8, -6, Anchor::end);
         c.line(page(eye), page(eye - d * uvw.w), Ink::guide, Stroke::dashed);
-        c.label(page(eye - rt::Real(0.5) * d * uvw.w), "d", Ink::guide, 0, -22, Anchor::middle);
+        c.label(page(eye - rt::Real(0.5) * d * uvw.w), "d", Ink::axis, 0, -24, Anchor::middle);
     }
-    c.label(page(eye - reach * uvw.w), perspective ? "perspective: from the eye" : "orthographic: parallel",
-            Ink::camera, 0, -30, Anchor::end);
     return c;
 }
 

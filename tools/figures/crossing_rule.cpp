@@ -32,12 +32,17 @@ Canvas crossing_rule(const rt::Fields& in) {
         const P2 from{double(p.x), double(p.y)}, to{right + 0.15 * (right - left), double(p.y)};
         c.arrow(from, to, Ink::camera, Stroke::thin);
         int crossings = 0;
+        std::vector<double> marks;
         for (std::size_t i = 0, j = polygon.size() - 1; i < polygon.size(); j = i++) {
             const rt::Vec2 &a = polygon[i], &b = polygon[j];
             if ((a.y > p.y) != (b.y > p.y)) {
                 const rt::Real x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);
                 if (x > p.x) {
                     ++crossings;
+                    // Two edges crossed at one place (a vertex): one mark, labelled x2.
+                    if (std::count(marks.begin(), marks.end(), double(x)))
+                        c.label({double(x), double(p.y)}, "×2", Ink::camera, 0, 10, Anchor::middle, true);
+                    marks.push_back(double(x));
                     c.dot({double(x), double(p.y)}, Ink::camera, true);
                 }
             }

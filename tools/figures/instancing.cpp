@@ -42,7 +42,7 @@ Canvas instancing(const rt::Fields& in) {
     c.label(flat(world.p) + len * flat(world.normal), "(M⁻¹)ᵀ n", Ink::normal, -6, 6, Anchor::end);
     c.arrow(flat(world.p), flat(world.p) + len * flat(naive), Ink::guide, Stroke::dashed);
     c.label(flat(world.p) + len * flat(naive), "M n: not normal", Ink::guide, 6, 4, Anchor::start, true);
-    c.label(flat(to_world.point(rt::Vec3(0, -1, 0))), "world: M × unit sphere", Ink::axis, 0, -30, Anchor::middle,
+    c.label(flat(to_world.point(rt::Vec3(0, -1, 0))), "world: the unit sphere by M", Ink::axis, 0, -30, Anchor::middle,
             true);
     // Object space: the same t on the ray M^-1 e + t M^-1 d.
     c.polygon(circle, Ink::surface);
@@ -50,7 +50,7 @@ Canvas instancing(const rt::Fields& in) {
     c.dot(flat(local.at(world.t) + shift), Ink::hit);
     c.arrow(flat(h.local.p + shift), flat(h.local.p + shift) + len * flat(h.local.normal), Ink::normal);
     c.label(flat(h.local.p + shift) + len * flat(h.local.normal), "n", Ink::normal, 6, 4);
-    c.label(flat(shift - rt::Vec3(0, 1, 0)), "object space: ray × M⁻¹", Ink::axis, 0, -30, Anchor::middle, true);
+    c.label(flat(shift - rt::Vec3(0, 1, 0)), "object space: the ray by M⁻¹", Ink::axis, 0, -30, Anchor::middle, true);
     c.label(flat(local.at(world.t) + shift), "t = " + number(double(world.t)), Ink::hit, 8, -20, Anchor::start, true);
     c.label(flat(world.p), "t = " + number(double(world.t)), Ink::hit, 8, -20, Anchor::start, true);
     return c;

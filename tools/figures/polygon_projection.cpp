@@ -43,9 +43,10 @@ Canvas polygon_projection(const rt::Fields& in) {
             "n = (" + number(double(polygon.normal().x), 2) + ", " + number(double(polygon.normal().y), 2) + ", " +
                 number(double(polygon.normal().z), 2) + ")",
             Ink::normal, 6, 4, Anchor::start, true);
-    c.label(flat_copy[0],
-            std::string("dropped: ") + names[dropped] + "; kept: " + names[kept[0]] + ", " + names[kept[1]],
-            Ink::camera, 0, -24, Anchor::middle, true);
+    P2 middle{0, 0};
+    for (const P2& q : flat_copy) middle = middle + (1.0 / double(flat_copy.size())) * q;
+    c.label(middle, std::string("drop ") + names[dropped] + ", keep " + names[kept[0]] + " and " + names[kept[1]],
+            Ink::camera, 0, -6, Anchor::middle, true);
     return c;
 }
 

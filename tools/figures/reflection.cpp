@@ -29,10 +29,11 @@ Canvas reflection(const rt::Fields& in) {
     c.arrow(p, p + flat(d), Ink::guide, Stroke::dashed);
     c.label(p + flat(d), "d", Ink::guide, 6, -14);
     c.arrow(p + flat(d), p + flat(r), Ink::normal, Stroke::dashed);
-    c.label(p + flat(d) + 0.5 * flat(r - d), "−2(d·n)n", Ink::normal, 8, 0);
+    c.label(p + flat(d) + 0.3 * flat(r - d), "−2(d·n)n", Ink::normal, 8, 0);
     c.angle(p, flat(-d), flat(n), 44, Ink::axis);
     c.angle(p, flat(n), flat(r), 52, Ink::axis);
-    c.label(p, "θ = " + number(degrees_between(-d, n), 3) + "° each side", Ink::axis, 0, 70, Anchor::middle, true);
+    c.label(p + half * along, "θ = " + number(degrees_between(-d, n), 3) + "° on each side of n", Ink::axis, 6, -60,
+            Anchor::start, true);
     return c;
 }
 

@@ -41,10 +41,10 @@ Canvas shading_vectors(const rt::Fields& in) {
     vec(h, Ink::axis, "h");
     vec(r, Ink::reflected, "r");
     c.dot(p, Ink::hit);
-    c.label(p,
+    c.label(flat(sphere.center - rt::Vec3(0, sphere.radius, 0)),
             "angle(n, h) = " + number(degrees_between(n, h), 3) +
                 "°, angle(r, v) = " + number(degrees_between(r, v), 3) + "°",
-            Ink::axis, 0, -34, Anchor::middle, true);
+            Ink::axis, 0, -26, Anchor::middle, true);
     return c;
 }
 

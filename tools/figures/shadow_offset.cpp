@@ -35,7 +35,7 @@ Canvas shadow_offset(const rt::Fields& in) {
             c.line(flat(shadow.ray.origin), q, Ink::shadow);
             c.line(q, flat(light), Ink::guide, Stroke::dashed);
             c.dot(q, Ink::shadow);
-            c.label(q, "hits its own surface: acne", Ink::shadow, -10, 10, Anchor::end, true);
+            c.label(q, "hits its own surface: acne", Ink::shadow, 10, 14, Anchor::start, true);
         } else {
             c.arrow(flat(shadow.ray.origin), flat(light), Ink::shadow);
             c.label(0.5 * (flat(shadow.ray.origin) + flat(light)), "reaches the light", Ink::shadow, 10, 0,
@@ -46,10 +46,11 @@ Canvas shadow_offset(const rt::Fields& in) {
             c.label(0.5 * (flat(p) + flat(shadow.ray.origin)), "ε n", Ink::normal, 8, -6);
         }
         c.dot(flat(exact), Ink::hit, true);
+        if (!offset_it) c.label(flat(exact), "exact", Ink::hit, -10, 6, Anchor::end, true);
         c.dot(flat(p), Ink::hit);
-        c.label(flat(p), offset_it ? "p, offset" : "computed p", Ink::hit, 0, -24, Anchor::middle, true);
+        c.label(flat(p), "computed p", Ink::hit, 0, -24, Anchor::middle, true);
     }
-    c.label({-double(w), 0}, "surface", Ink::surface, 6, 8, Anchor::start, true);
+    c.label({double(w), -0.35 * double(light.y)}, "surface", Ink::surface, -6, 8, Anchor::end, true);
     return c;
 }
 

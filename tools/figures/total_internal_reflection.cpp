@@ -52,7 +52,7 @@ Canvas total_internal_reflection(const rt::Fields& in) {
     }
     const P2 critical{depth * std::tan(lo * M_PI / 180), 0};
     c.line(source, critical, Ink::axis, Stroke::dashed);
-    c.label(critical, "θc = " + number(lo, 3) + "°", Ink::axis, 6, -34, Anchor::start, true);
+    c.label(source, "dashed: the critical angle θc = " + number(lo, 3) + "°", Ink::axis, 16, -14, Anchor::start, true);
     c.dot(source, Ink::hit);
     c.label({-0.3 * depth, -depth * 1.15}, "n = " + number(double(n_from)), Ink::axis, 6, 8);
     c.label({-0.3 * depth, 0}, "nₜ = " + number(double(n_to)), Ink::axis, 6, 10);
