@@ -19,7 +19,8 @@ file(REMOVE_RECURSE ${WORK})
 file(MAKE_DIRECTORY ${WORK})
 
 # Every description renders.
-execute_process(COMMAND ${FIGURES} --root ${ROOT} --out ${WORK}/out RESULT_VARIABLE code ERROR_VARIABLE err)
+execute_process(COMMAND ${FIGURES} --root ${ROOT} --out ${WORK}/out RESULT_VARIABLE code ERROR_VARIABLE err
+                OUTPUT_QUIET)
 if(NOT code EQUAL 0)
     message(FATAL_ERROR "rtlab-figures failed (exit ${code}): ${err}")
 endif()

@@ -35,8 +35,8 @@ Canvas refraction(const rt::Fields& in) {
     c.angle(p, flat(t), flat(-n), 50, Ink::axis);
     c.label(p, "θ = " + number(degrees_between(-d, n), 3) + "°", Ink::axis, -14, 62, Anchor::end);
     c.label(p, "φ = " + number(degrees_between(t, -n), 3) + "°", Ink::axis, 14, -72);
-    c.label({-half, 0}, "n = " + number(double(n_from)), Ink::axis, 6, 10);
-    c.label({-half, 0}, "nₜ = " + number(double(n_to)), Ink::axis, 6, -24);
+    c.label({-half, 0}, "n₁ = " + number(double(n_from)), Ink::axis, 6, 10);
+    c.label({-half, 0}, "n₂ = " + number(double(n_to)), Ink::axis, 6, -24);
     return c;
 }
 

@@ -54,8 +54,8 @@ Canvas total_internal_reflection(const rt::Fields& in) {
     c.line(source, critical, Ink::axis, Stroke::dashed);
     c.label(source, "dashed: the critical angle θc = " + number(lo, 3) + "°", Ink::axis, 16, -14, Anchor::start, true);
     c.dot(source, Ink::hit);
-    c.label({-0.3 * depth, -depth * 1.15}, "n = " + number(double(n_from)), Ink::axis, 6, 8);
-    c.label({-0.3 * depth, 0}, "nₜ = " + number(double(n_to)), Ink::axis, 6, 10);
+    c.label({-0.3 * depth, -depth * 1.15}, "n₁ = " + number(double(n_from)), Ink::axis, 6, 8);
+    c.label({-0.3 * depth, 0}, "n₂ = " + number(double(n_to)), Ink::axis, 6, 10);
     return c;
 }
 
