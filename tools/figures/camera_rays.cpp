@@ -52,9 +52,10 @@ Canvas camera_rays(const rt::Fields& in) {
         if (hits) c.dot(page(ray.at(end)), Ink::hit);
         c.dot(page(ray.at(plane / glm::dot(ray.direction, -uvw.w))), Ink::camera, true);
     }
+    // The eye: where every perspective ray starts; the middle of the orthographic window.
+    c.dot(page(eye), Ink::hit);
+    c.label(page(eye), "e", Ink::hit, -8, -6, Anchor::end);
     if (perspective) {
-        c.dot(page(eye), Ink::hit);
-        c.label(page(eye), "e", Ink::hit, -8, -6, Anchor::end);
         c.line(page(eye), page(eye - d * uvw.w), Ink::guide, Stroke::dashed);
         c.label(page(eye - rt::Real(0.5) * d * uvw.w), "d", Ink::axis, 0, -24, Anchor::middle);
     }
