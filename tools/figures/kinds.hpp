@@ -5,7 +5,19 @@
 #include "svg.hpp"
 
 // X(name in the description's "kind", function)
-#define RTLAB_FIGURE_KINDS(X) X("ray-sphere", ray_sphere)
+#define RTLAB_FIGURE_KINDS(X)             \
+    X("ray-sphere", ray_sphere)           \
+    X("slab", slab)                       \
+    X("bvh-tree", bvh_tree)               \
+    X("grid-walk", grid_walk)             \
+    X("grid-trap", grid_trap)             \
+    X("bsp-cases", bsp_cases)             \
+    X("csg-spans", csg_spans)             \
+    X("pixel-samples", pixel_samples)     \
+    X("stratum-pairing", stratum_pairing) \
+    X("thin-lens", thin_lens)             \
+    X("glossy-square", glossy_square)     \
+    X("motion-blur", motion_blur)
 
 namespace figures {
 
