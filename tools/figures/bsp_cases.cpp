@@ -27,7 +27,7 @@ Canvas bsp_cases(const rt::Fields& in) {
     const rt::Box cell = bsp.bounding_box();
     const double D = double(root.split);
     const double width = double(cell.max.x - cell.min.x), height = double(cell.max.y - cell.min.y);
-    const double gap_x = 0.25 * width, gap_y = 0.45 * height;
+    const double gap_x = 0.35 * width, gap_y = 0.85 * height;
 
     Canvas c;
     int panel = 0;

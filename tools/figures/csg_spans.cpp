@@ -29,6 +29,7 @@ Canvas csg_spans(const rt::Fields& in) {
     Canvas c;
     c.circle(flat(circle.center), double(circle.radius), Ink::surface);
     c.box(flat(square.min), flat(square.max), Ink::surface);
+    c.circle(flat(circle.center), double(circle.radius), Ink::surface, false, Stroke::dashed);  // seen through S
     c.label(flat(circle.center) + P2{-0.7 * double(circle.radius), 0.7 * double(circle.radius)}, "C", Ink::axis, -4, 4,
             Anchor::end);
     c.label(P2{double(square.max.x), double(square.max.y)}, "S", Ink::axis, 4, 4);
@@ -37,7 +38,7 @@ Canvas csg_spans(const rt::Fields& in) {
     c.label(flat(ray.origin), "e", Ink::camera, -8, 4, Anchor::end);
 
     const double size = double(circle.radius);
-    const double row = 0.42 * size, bar = 0.1 * size;
+    const double row = 0.42 * size, bar = 0.07 * size;
     const double top = std::min(double(circle.center.y - circle.radius), double(square.min.y)) - 0.5 * size;
     const double left = double(ray.origin.x);
     struct Row {

@@ -38,21 +38,21 @@ Canvas glossy_square(const rt::Fields& in) {
     c.arrow(flat(p), flat(p + rt::Real(0.6) * n), Ink::normal);
     c.label(flat(p + rt::Real(0.6) * n), "n", Ink::normal, 4, 4);
     c.line(flat(r - a / 2 * U), flat(r + a / 2 * U), Ink::axis);
-    c.label(flat(r + a / 2 * U), "a", Ink::axis, 6, 0, Anchor::start, true);
+    c.label(flat(r + a / 2 * U), "a", Ink::axis, -6, 2, Anchor::end, true);
 
-    const double face = 1.6 + double(a) / 2;  // where the face-on square is centred, to the right
-    const double h = double(a) / 2;
-    const P2 mid{face + 0.4, 0.9};
+    // The face-on square, to the right, magnified to a side of 1.
+    const double zoom = 1 / double(a), h = 0.5;
+    const P2 mid{2.3, 0.75};
     c.box(mid - P2{h, h}, mid + P2{h, h}, Ink::surface);
     for (int k = 1; k < *side; ++k) {
-        const double s = -h + double(a) * k / *side;
+        const double s = -h + 2 * h * k / *side;
         c.line(mid + P2{s, -h}, mid + P2{s, h}, Ink::guide, Stroke::dashed);
         c.line(mid + P2{-h, s}, mid + P2{h, s}, Ink::guide, Stroke::dashed);
     }
-    c.arrow(mid, mid + P2{h + 0.15, 0}, Ink::axis);
-    c.label(mid + P2{h + 0.15, 0}, "U", Ink::axis, 4, -6);
-    c.arrow(mid, mid + P2{0, h + 0.15}, Ink::axis);
-    c.label(mid + P2{0, h + 0.15}, "V", Ink::axis, -4, 4, Anchor::end);
+    c.arrow(mid - P2{h, h + 0.12}, mid + P2{-h + 0.35, -h - 0.12}, Ink::axis);
+    c.label(mid + P2{-h + 0.35, -h - 0.12}, "U", Ink::axis, 4, -6);
+    c.arrow(mid - P2{h + 0.12, h}, mid + P2{-h - 0.12, -h + 0.35}, Ink::axis);
+    c.label(mid + P2{-h - 0.12, -h + 0.35}, "V", Ink::axis, -4, 0, Anchor::end);
 
     rt::Sampler sampler(seed, pixel);
     sampler.set_strata(count, *side, rt::Strata::jittered);
@@ -64,11 +64,11 @@ Canvas glossy_square(const rt::Fields& in) {
         below += !leaves;
         c.line(flat(p), flat(p + rt::Real(1.15) * r2), leaves ? Ink::reflected : Ink::guide, Stroke::thin);
         const rt::Vec3 off = r2 - r;
-        c.dot(mid + P2{double(glm::dot(off, U)), double(glm::dot(off, V))}, Ink::reflected, !leaves);
+        c.dot(mid + zoom * P2{double(glm::dot(off, U)), double(glm::dot(off, V))}, Ink::reflected, !leaves);
     }
     c.arrow(flat(p), flat(r), Ink::axis);
-    c.label(flat(r), "r", Ink::axis, -6, 6, Anchor::end);
-    c.label(mid - P2{0, h},
+    c.label(flat(r), "r", Ink::axis, 8, -14);
+    c.label(mid - P2{0, h + 0.3},
             "the square, face on: a = " + number(double(a)) +
                 (below ? ", " + std::to_string(below) + " below the surface" : ""),
             Ink::axis, 0, -22, Anchor::middle, true);

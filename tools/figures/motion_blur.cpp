@@ -41,8 +41,9 @@ Canvas motion_blur(const rt::Fields& in) {
 
     // The clock under the picture: time 0 under the swept box's left side, 1 under its right.
     const double x0 = double(swept.min.x), x1 = double(swept.max.x), size = double(ball.radius);
-    const double y = double(swept.min.y) - 0.6 * size;
+    const double y = double(swept.min.y) - 0.8 * size;
     auto clock = [&](rt::Real time) { return P2{x0 + (x1 - x0) * double(time), y}; };
+    c.line(clock(0), clock(1), Ink::axis, Stroke::thin);
     c.box(clock(shutter[0]) - P2{0, 0.12 * size}, clock(shutter[1]) + P2{0, 0.12 * size}, Ink::surface);
     for (int k = 0; k <= count; ++k) {
         const P2 tick = clock(shutter[0] + (shutter[1] - shutter[0]) * rt::Real(k) / rt::Real(count));
