@@ -49,7 +49,7 @@ Canvas slab(const rt::Fields& in) {
             c.line(P2{double(lo.x) - margin, y} + shift, P2{double(hi.x) + margin, y} + shift, Ink::guide,
                    Stroke::dashed);
         c.box(P2{double(lo.x), double(lo.y)} + shift, P2{double(hi.x), double(hi.y)} + shift, Ink::surface);
-        c.label(P2{double(lo.x), top} + shift, "x slab", Ink::axis, 4, -18, Anchor::start, true);
+        c.label(P2{double(lo.x), bottom} + shift, "x slab", Ink::axis, 4, 4, Anchor::start, true);
         c.label(P2{double(lo.x) - margin, double(hi.y)} + shift, "y slab", Ink::axis, 2, 6, Anchor::start, true);
         c.arrow(at(0), at(t_end), Ink::camera);
         c.dot(at(0), Ink::camera);
