@@ -1,4 +1,4 @@
-// rtlab-figures: the book's diagrams, drawn by the library itself (book §0; issue 30).
+// rtlab-figures: the book's diagrams, drawn by the library itself.
 //
 //   rtlab-figures --root SRC --out OUT   writes OUT/chNN/figures/NAME.svg for every description
 //                                        SRC/chapters/chNN_*/figures/NAME.json
@@ -19,14 +19,18 @@
 //   2. One line in RTLAB_FIGURE_KINDS (kinds.hpp): X("the-kind", NAME).
 //   3. The file is picked up by tools/CMakeLists.txt (a glob of tools/figures/*.cpp).
 //   4. A description chapters/chNN_*/figures/FIG.json, and `![caption](../chNN/figures/FIG.svg)`
-//      in the chapter's book text (the ctest `figures` checks that both exist). Look at it:
-//      rsvg-convert -o /tmp/fig.png out/chNN/figures/FIG.svg.
+//      in the chapter's book text (the ctest `figures` checks that both exist; raise
+//      RTLAB_FIGURES_MIN in tests/figures.cmake to the new count). Look at it:
+//      rsvg-convert -o /tmp/fig.png out/chNN/figures/FIG.svg (librsvg2-bin).
+// Shared helpers (kinds.hpp, svg.hpp): flat() puts a point of the plane z = 0 on the page,
+// View3 draws 3D from a chosen direction, number() and degrees_between() write labels.
 #include "kinds.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
 
 #include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
@@ -47,6 +51,11 @@ std::string number(double v, int digits) {
     // A typographic minus: "−0.5" reads better than "-0.5" in a label.
     if (!s.empty() && s[0] == '-') s = "\u2212" + s.substr(1);
     return s;
+}
+
+double degrees_between(const rt::Vec3& a, const rt::Vec3& b) {
+    const double c = double(glm::dot(rt::unit_vector(a), rt::unit_vector(b)));
+    return std::acos(std::clamp(c, -1.0, 1.0)) * 180 / M_PI;
 }
 
 }  // namespace figures

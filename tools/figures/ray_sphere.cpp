@@ -31,7 +31,7 @@ Canvas ray_sphere(const rt::Fields& in) {
             c.line(p0, p1, Ink::camera, Stroke::dashed);  // the line goes on through the sphere
             c.dot(p0, Ink::hit);
             c.dot(p1, Ink::hit, true);
-            c.label(p0, "t₀ = " + number(double(t_near)), Ink::hit, -8, 8, Anchor::end);
+            c.label(p0, "t₀ = " + number(double(t_near)), Ink::hit, -10, -22, Anchor::end);
             c.label(p1, "t₁ = " + number(double(t_far)), Ink::hit, 8, -16);
             const P2 p = flat(rec.p);
             c.arrow(p, p + 0.55 * double(sphere.radius) * flat(rec.normal), Ink::normal);
@@ -48,7 +48,8 @@ Canvas ray_sphere(const rt::Fields& in) {
             c.label(flat(foot), "h = " + number(double(glm::length(foot - sphere.center))) + " > R", Ink::axis, 8, 6);
         }
     }
-    c.label(center + P2{0, -double(sphere.radius)}, "R = " + number(double(sphere.radius)), Ink::surface, 0, -22,
+    c.line(center, center - P2{double(sphere.radius), 0}, Ink::surface, Stroke::thin);
+    c.label(center - P2{0.5 * double(sphere.radius), 0}, "R = " + number(double(sphere.radius)), Ink::surface, 0, 8,
             Anchor::middle);
     return c;
 }

@@ -40,6 +40,11 @@ Colors palette(Ink ink) {
     }
 }
 
+// Text in the stroke's colour, except where that is too pale to read in print.
+const char* text_color(Ink ink) {
+    return palette(ink == Ink::guide ? Ink::surface : ink).stroke;
+}
+
 constexpr double kWidth = 640;      // page width, pixels
 constexpr double kMaxHeight = 560;  // a tall figure is narrowed rather than made taller than this
 constexpr double kMargin = 14;      // white space around everything, pixels
@@ -254,9 +259,9 @@ std::string Canvas::svg(const std::string& title) const {
                                                                    : "end";
                 // A white halo keeps a label readable where it crosses a line.
                 out += "<text x=\"" + num(q.x) + "\" y=\"" + num(q.y) + "\" font-size=\"" +
-                       num(it.fill ? kSmallFont : kFont) + "\" text-anchor=\"" + anchor + "\" fill=\"" + c.stroke +
-                       "\" stroke=\"#ffffff\" stroke-width=\"4\" paint-order=\"stroke\">" + escape(it.text) +
-                       "</text>\n";
+                       num(it.fill ? kSmallFont : kFont) + "\" text-anchor=\"" + anchor + "\" fill=\"" +
+                       text_color(it.ink) + "\" stroke=\"#ffffff\" stroke-width=\"4\" paint-order=\"stroke\">" +
+                       escape(it.text) + "</text>\n";
                 break;
             }
         }
