@@ -75,7 +75,10 @@ set(bad_cases
     "radius|{\"kind\": \"ray-sphere\", \"caption\": \"c\", \"center\": [0, 0, 0], \"radius\": -1, \"rays\": []}"
     "colour|{\"kind\": \"ray-sphere\", \"caption\": \"c\", \"center\": [0, 0, 0], \"radius\": 1, \"rays\": [], \"colour\": 1}"
     "kind|{\"kind\": \"teapot\", \"caption\": \"c\"}"
-    "not valid JSON|{\"kind\": \"ray-sphere\",")
+    "not valid JSON|{\"kind\": \"ray-sphere\","
+    "square number|{\"kind\": \"pixel-samples\", \"caption\": \"c\", \"samples\": 10, \"seed\": 0, \"pixel\": 0}"
+    "not in front of the triangle|{\"kind\": \"grid-trap\", \"caption\": \"c\", \"triangle\": [[4, -2, -1.5], [4, 2, -1.5], [0, 0, 2.5]], \"sphere\": {\"center\": [3.5, 0, -0.3], \"radius\": 0.4}, \"density\": 50, \"ray\": {\"origin\": [-1, 0, -0.3], \"direction\": [1, 0, 0], \"t_end\": 5}}"
+    "cut once, across x|{\"kind\": \"bsp-cases\", \"caption\": \"c\", \"spheres\": [{\"center\": [0, -1, 0], \"radius\": 0.5}, {\"center\": [0, 1, 0], \"radius\": 0.5}], \"rays\": []}")
 set(n 0)
 foreach(case IN LISTS bad_cases)
     string(REGEX REPLACE "\\|.*" "" expect "${case}")

@@ -9,6 +9,9 @@
 #include "geometry/sphere.hpp"
 #include "kinds.hpp"
 
+#include <string>
+#include <vector>
+
 namespace figures {
 
 Canvas bsp_cases(const rt::Fields& in) {

@@ -6,6 +6,10 @@
 #include "geometry/shape.hpp"
 #include "kinds.hpp"
 
+#include <algorithm>
+#include <string>
+#include <vector>
+
 namespace figures {
 
 Canvas csg_spans(const rt::Fields& in) {

@@ -11,6 +11,9 @@
 #include "render/strata.hpp"
 #include "shading/optics.hpp"
 
+#include <cstdint>
+#include <string>
+
 namespace figures {
 
 Canvas glossy_square(const rt::Fields& in) {

@@ -8,6 +8,8 @@
 #include "geometry/triangle.hpp"
 #include "grid_view.hpp"
 
+#include <vector>
+
 namespace figures {
 
 Canvas grid_trap(const rt::Fields& in) {

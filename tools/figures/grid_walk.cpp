@@ -7,6 +7,9 @@
 #include "geometry/sphere.hpp"
 #include "grid_view.hpp"
 
+#include <string>
+#include <vector>
+
 namespace figures {
 
 Canvas grid_walk(const rt::Fields& in) {

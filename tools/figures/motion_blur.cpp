@@ -10,6 +10,10 @@
 #include "render/camera.hpp"
 #include "render/strata.hpp"
 
+#include <cstdint>
+#include <string>
+#include <vector>
+
 namespace figures {
 
 Canvas motion_blur(const rt::Fields& in) {

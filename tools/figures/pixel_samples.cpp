@@ -7,6 +7,9 @@
 #include "render/render.hpp"
 #include "render/strata.hpp"
 
+#include <cstdint>
+#include <string>
+
 namespace figures {
 
 Canvas pixel_samples(const rt::Fields& in) {

@@ -6,7 +6,10 @@
 #include "accel/course_bvh.hpp"
 #include "kinds.hpp"
 
+#include <algorithm>
 #include <optional>
+#include <string>
+#include <utility>
 
 namespace figures {
 

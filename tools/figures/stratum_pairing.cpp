@@ -11,6 +11,10 @@
 #include "render/strata.hpp"
 #include "shading/light.hpp"
 
+#include <algorithm>
+#include <cstdint>
+#include <string>
+
 namespace figures {
 
 Canvas stratum_pairing(const rt::Fields& in) {
