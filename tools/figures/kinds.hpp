@@ -18,7 +18,18 @@
     X("reflection", reflection)                               \
     X("refraction", refraction)                               \
     X("total-internal-reflection", total_internal_reflection) \
-    X("instancing", instancing)
+    X("instancing", instancing)                               \
+    X("slab", slab)                                           \
+    X("bvh-tree", bvh_tree)                                   \
+    X("grid-walk", grid_walk)                                 \
+    X("grid-trap", grid_trap)                                 \
+    X("bsp-cases", bsp_cases)                                 \
+    X("csg-spans", csg_spans)                                 \
+    X("pixel-samples", pixel_samples)                         \
+    X("stratum-pairing", stratum_pairing)                     \
+    X("thin-lens", thin_lens)                                 \
+    X("glossy-square", glossy_square)                         \
+    X("motion-blur", motion_blur)
 
 namespace figures {
 
