@@ -54,7 +54,9 @@ fi
 # min A B: the smaller of two decimal numbers (A may be empty)
 min() { awk -v a="$1" -v b="$2" 'BEGIN{print (a == "" || b + 0 < a + 0) ? b : a}'; }
 
-echo "${width}x$height, 1 sample per pixel, the default structure (fast); fastest of $rounds processes"
+read -r load1 _ </proc/loadavg  # others' work on a shared machine: a busy one's 2-thread rows gain little
+echo "${width}x$height, 1 sample per pixel, the default structure (fast); fastest of $rounds processes;"
+echo "load average $load1 at the start"
 printf '%-15s %7s %10s %9s %10s %12s %9s\n' scene threads "frame ms" frames/s "Mrays/s" "rays/frame" "other ms"
 for c in "${cases[@]}"; do
     read -r name scene <<<"$c"
