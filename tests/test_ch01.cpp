@@ -173,7 +173,7 @@ TEST_CASE("stress: every pixel's ray passes through its window point, cameras at
 // view volume carried back through the inverse of projection x view, with near and far
 // planes at 1e-3 and 1e3. The frame's rays meet the stress test's bound; the matrix's miss
 // it by more than a thousand times, in float and in double alike.
-TEST_CASE("1.6 a ray unprojected through an inverse perspective matrix loses what the frame keeps") {
+TEST_CASE("matrix: a ray unprojected through an inverse perspective matrix loses what the frame keeps") {
     pcg32 rng(2024);
     std::uniform_real_distribution<double> unit(-1, 1);
     const Real near_plane = Real(1e-3), far_plane = Real(1e3), bound = 16 * kEps;
