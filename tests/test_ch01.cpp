@@ -2,6 +2,7 @@
 #include "render/camera.hpp"
 #include "support.hpp"
 
+#include <glm/gtc/matrix_transform.hpp>
 #include <pcg_random.hpp>
 
 #include <random>
@@ -165,5 +166,53 @@ TEST_CASE("stress: every pixel's ray passes through its window point, cameras at
     }
     CHECK(checked == 3 * 50 * 7 * 5);
     CHECK(failures == 0);
+}
+
+// Book §1.6, "Why not a perspective matrix?": the same cameras as the stress test, 100 units
+// from the origin, their rays taken the rasteriser's way instead: the pixel's corner of the
+// view volume carried back through the inverse of projection x view, with near and far
+// planes at 1e-3 and 1e3. The frame's rays meet the stress test's bound; the matrix's miss
+// it by more than a thousand times, in float and in double alike.
+TEST_CASE("matrix: a ray unprojected through an inverse perspective matrix loses what the frame keeps") {
+    pcg32 rng(2024);
+    std::uniform_real_distribution<double> unit(-1, 1);
+    const Real near_plane = Real(1e-3), far_plane = Real(1e3), bound = 16 * kEps;
+    double worst_frame = 0, worst_matrix = 0;  // relative error of (u_s, v_s), in units of epsilon
+    for (int k = 0; k < 50; ++k) {
+        Camera cam;
+        cam.eye = Vec3{Real(1e2 * unit(rng)), Real(1e2 * unit(rng)), Real(1e2 * unit(rng))};
+        cam.target = cam.eye + Vec3{Real(unit(rng)), Real(unit(rng)), Real(unit(rng))};
+        cam.vertical_fov_degrees = Real(20 + 100 * (unit(rng) + 1) / 2);
+        const View v = cam.view(37, 23);
+        using Mat4 = glm::mat<4, 4, Real>;
+        using Vec4 = glm::vec<4, Real>;
+        const Mat4 inverse = glm::inverse(
+            glm::perspective(glm::radians(cam.vertical_fov_degrees), Real(37) / Real(23), near_plane, far_plane) *
+            glm::lookAt(cam.eye, cam.target, cam.up));
+        for (int i = 0; i < 37; i += 6)
+            for (int j = 0; j < 23; j += 5) {
+                const Vec2 want = window_point(Real(i) + Real(0.5), Real(j) + Real(0.5), 37, 23, v.window);
+                // The same point of the image in normalised device coordinates, [-1, 1]^2.
+                const Real x = want.x / v.window.r, y = want.y / v.window.t;
+                const Vec4 n = inverse * Vec4(x, y, -1, 1), f = inverse * Vec4(x, y, 1, 1);
+                const Vec3 from_matrix = Vec3(f) / f.w - Vec3(n) / n.w;
+                // Each direction's window point: where it meets the plane at the focal distance.
+                auto error = [&](const Vec3& d) {
+                    const double depth = -double(glm::dot(d, v.uvw.w)) / double(v.focal_distance);
+                    const double du = double(glm::dot(d, v.uvw.u)) / depth - double(want.x);
+                    const double dv = double(glm::dot(d, v.uvw.v)) / depth - double(want.y);
+                    return std::max(std::abs(du) / (1 + std::abs(double(want.x))),
+                                    std::abs(dv) / (1 + std::abs(double(want.y)))) /
+                           double(kEps);
+                };
+                worst_frame = std::max(worst_frame, error(v.pixel_ray(i, j).direction));
+                const double m = error(from_matrix);
+                worst_matrix = std::max(worst_matrix, std::isfinite(m) ? m : HUGE_VAL);
+            }
+    }
+    CAPTURE(worst_frame);
+    CAPTURE(worst_matrix);
+    CHECK(worst_frame < double(bound / kEps));
+    CHECK(worst_matrix > 1000 * double(bound / kEps));
 }
 }  // TEST_SUITE("ch01")

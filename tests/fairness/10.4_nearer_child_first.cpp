@@ -1,5 +1,5 @@
 // fairness 10.4 pass: the search visits the child whose box centre lies nearer along the ray
-// first (the book's further work, §10.8); the best hit is still passed down and ties are still
+// first (the book's further work, §10.9); the best hit is still passed down and ties are still
 // settled by hit_primitive's one order, so the hits are brute force's
 // @body
     if (is_primitive(ref)) return hit_primitive(surfaces, ref, ray, interval, best);
