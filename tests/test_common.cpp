@@ -109,6 +109,29 @@ TEST_CASE("sRGB transfer function: known values and round trip") {
     for (int i = 0; i <= 255; ++i) CHECK(std::lround(255 * linear_to_srgb(srgb_to_linear(float(i) / 255))) == i);
 }
 
+TEST_CASE("sRGB 8-bit codes from the threshold table equal the formula's") {
+    const auto formula = [](float x) { return int(std::lround(255.0f * linear_to_srgb(x))); };
+    // Every float of [0, 1] in steps of 4099 bit patterns, then every float within 2000 ulps
+    // of each place where the code steps up: the places the table must get exactly.
+    const std::uint32_t one = std::bit_cast<std::uint32_t>(1.0f);
+    long checked = 0, wrong = 0;
+    for (std::uint32_t bits = 0; bits <= one; bits += 4099, ++checked)
+        wrong += linear_to_srgb8(std::bit_cast<float>(bits)) != formula(std::bit_cast<float>(bits));
+    for (int k = 1; k <= 255; ++k) {
+        const float at = srgb_to_linear((float(k) - 0.5f) / 255);  // near the step to code k
+        const std::uint32_t centre = std::bit_cast<std::uint32_t>(at);
+        for (std::uint32_t bits = centre - 2000; bits <= centre + 2000; ++bits, ++checked)
+            wrong += linear_to_srgb8(std::bit_cast<float>(bits)) != formula(std::bit_cast<float>(bits));
+    }
+    CHECK(checked > 1'000'000);
+    CHECK(wrong == 0);
+    CHECK(linear_to_srgb8(-0.0f) == 0);
+    CHECK(linear_to_srgb8(-5) == 0);
+    CHECK(linear_to_srgb8(7) == 255);
+    CHECK(linear_to_srgb8(std::numeric_limits<float>::infinity()) == 255);
+    CHECK(linear_to_srgb8(std::numeric_limits<float>::quiet_NaN()) == 0);
+}
+
 TEST_CASE("PNG: written sRGB, read back to within one 8-bit step") {
     const fs::path dir = temp_dir();
     const Image img = gradient(33, 17);

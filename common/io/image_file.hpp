@@ -1,5 +1,6 @@
 #pragma once
-// Image files: PNG (8-bit sRGB, through stb) and PFM (linear float).
+// Image files: PNG (8-bit sRGB; written through libspng, read through stb) and PFM (linear
+// float).
 #include "render/image.hpp"
 
 #include <string>
@@ -15,6 +16,8 @@ bool is_image_path(const std::string& path);
 void write_image(const Image& image, const std::string& path);
 void write_png(const Image& image, const std::string& path);
 void write_pfm(const Image& image, const std::string& path);
+// The bytes of the PNG file write_png writes. Throws std::runtime_error.
+std::string encode_png(const Image& image);
 
 // Reads an 8-bit PNG (any channel count) into linear RGB. Throws std::runtime_error.
 Image read_png(const std::string& path);

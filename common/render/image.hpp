@@ -2,6 +2,7 @@
 // A linear-RGB float image, row 0 at the top (as files store it).
 #include "core/real.hpp"
 
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -22,5 +23,10 @@ struct Image {
 // sRGB transfer function, per channel; inputs are clamped to [0, 1].
 float linear_to_srgb(float linear);
 float srgb_to_linear(float encoded);
+
+// The 8-bit sRGB code of a linear value: exactly lround(255 * linear_to_srgb(linear)), read
+// from a table instead of through pow() (writing an image spent most of its time there).
+// NaN gives 0.
+std::uint8_t linear_to_srgb8(float linear);
 
 }  // namespace rt
