@@ -1,5 +1,7 @@
 // The core layer's parts no exercise implements: the limits table and its messages, text
-// made safe for one line, unit vectors at the ends of the range, and the Sampler's streams.
+// made safe for one line, unit vectors at the ends of the range, the Sampler's streams, and
+// the flat BVH's parallel build.
+#include "core/flat_bvh.hpp"
 #include "core/limits.hpp"
 #include "core/sampler.hpp"
 #include "core/text.hpp"
@@ -7,10 +9,16 @@
 #include "render/strata.hpp"
 #include "support.hpp"
 
+#include <algorithm>
 #include <cmath>
+#include <cstring>
 #include <limits>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include <tbb/task_arena.h>
+#include <pcg_random.hpp>
 
 using namespace rt;
 
@@ -93,5 +101,49 @@ TEST_CASE("unit_vector: any finite non-zero vector, huge or tiny, in float as in
     }
     CHECK(unit_vector(Vec3(3, 4, 0)) == Vec3(Real(0.6), Real(0.8), 0));
     CHECK(unit_vector(Vec3(0)) == Vec3(0));
+}
+
+TEST_CASE("flat BVH: the parallel build lays out the same tree on 1 thread as on 2, and it is whole") {
+    // 30,000 boxes of mixed sizes, clustered and spread, so the top levels split in parallel.
+    pcg32 rng(7);
+    const auto u = [&] { return Real(rng()) / Real(4294967296.0); };
+    std::vector<Box> boxes;
+    for (int k = 0; k < 30000; ++k) {
+        const Vec3 c = k % 3 ? Vec3(u(), u(), u()) * Real(100) : Vec3(u(), u(), u()) + Vec3(50);
+        const Vec3 h = Vec3(u(), u(), u()) * Real(k % 7 ? 0.1 : 3);
+        boxes.push_back(Box{c - h, c + h});
+    }
+    FlatBvh one, four;
+    tbb::task_arena(1).execute([&] { one = build_bvh(boxes, 4); });
+    tbb::task_arena(2).execute([&] { four = build_bvh(boxes, 4); });
+    REQUIRE(one.nodes.size() == four.nodes.size());
+    CHECK(std::memcmp(one.nodes.data(), four.nodes.data(), one.nodes.size() * sizeof(BvhNode)) == 0);
+    CHECK(one.items == four.items);
+    CHECK(one.depth == four.depth);
+    // Whole: every item in exactly one leaf, inside that leaf's box and every ancestor's; each
+    // inner node's children after it (the layout the serial build makes).
+    std::vector<int> seen(boxes.size(), 0);
+    long bad = 0;
+    std::vector<std::pair<std::uint32_t, std::vector<std::uint32_t>>> stack{{0u, {}}};
+    while (!stack.empty()) {
+        auto [at, path] = stack.back();
+        stack.pop_back();
+        const BvhNode& node = one.nodes[at];
+        path.push_back(at);
+        if (!node.leaf()) {
+            bad += node.first <= at;
+            stack.push_back({node.first, path});
+            stack.push_back({node.first + 1, path});
+            continue;
+        }
+        for (std::uint32_t k = node.first; k < node.first + node.count; ++k) {
+            const Box& b = boxes[one.items[k]];
+            ++seen[one.items[k]];
+            for (const std::uint32_t p : path)
+                for (int a = 0; a < 3; ++a) bad += !(one.nodes[p].lo[a] <= b.min[a] && b.max[a] <= one.nodes[p].hi[a]);
+        }
+    }
+    CHECK(bad == 0);
+    CHECK(std::count(seen.begin(), seen.end(), 1) == long(boxes.size()));
 }
 }  // TEST_SUITE("common")

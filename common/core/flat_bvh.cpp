@@ -7,6 +7,8 @@
 #include <bit>
 #include <cmath>
 
+#include <tbb/parallel_invoke.h>
+
 namespace rt {
 
 namespace {
@@ -17,6 +19,11 @@ Real half_area(const Box& b) {
 }
 
 constexpr int kBins = 16;
+
+// The build splits into parallel tasks in its top levels, for sides this large: enough tasks
+// for a machine's cores, and each big enough to be worth one.
+constexpr int kParallelLevels = 6;
+constexpr std::uint32_t kParallelItems = 4096;
 
 struct Builder {
     std::span<const Box> boxes;
@@ -101,8 +108,11 @@ struct Builder {
         return mid;
     }
 
-    void build(std::uint32_t at, std::uint32_t begin, std::uint32_t end, int depth) {
-        out.depth = std::max(out.depth, depth);
+    // Builds the subtree of items [begin, end) whose root is nodes[at]; its descendants are
+    // appended to `nodes` depth first, each pair of children side by side.
+    void build(std::vector<BvhNode>& nodes, int& deepest, std::uint32_t at, std::uint32_t begin, std::uint32_t end,
+               int depth) {
+        deepest = std::max(deepest, depth);
         Box bounds, centre_bounds;
         for (std::uint32_t k = begin; k < end; ++k) {
             bounds.expand(boxes[out.items[k]]);
@@ -112,26 +122,50 @@ struct Builder {
         // they are), and in float bounds containing the Real ones: a box only grows.
         const Box search = grown_by_rounding(bounds);
         for (int a = 0; a < 3; ++a) {
-            out.nodes[at].lo[a] = float_below(search.min[a]);
-            out.nodes[at].hi[a] = float_above(search.max[a]);
+            nodes[at].lo[a] = float_below(search.min[a]);
+            nodes[at].hi[a] = float_above(search.max[a]);
         }
         const std::uint32_t n = end - begin;
-        if (n == 1) return leaf(out.nodes[at], begin, end);
+        if (n == 1) return leaf(nodes[at], begin, end);
         // Near the depth limit only halving is allowed: bit_width(n) more levels reach one item.
         const bool must_halve = depth + int(std::bit_width(n)) >= kMaxBvhDepth;
         std::uint32_t mid =
             must_halve ? median_split(begin, end, centre_bounds) : sah_split(begin, end, bounds, centre_bounds);
         if (mid == end) {
-            if (n <= max_leaf) return leaf(out.nodes[at], begin, end);
+            if (n <= max_leaf) return leaf(nodes[at], begin, end);
             mid = median_split(begin, end, centre_bounds);
         }
-        const auto left = std::uint32_t(out.nodes.size());
-        out.nodes.push_back({});
-        out.nodes.push_back({});
-        out.nodes[at].first = left;
-        out.nodes[at].count = 0;
-        build(left, begin, mid, depth + 1);
-        build(left + 1, mid, end, depth + 1);
+        const auto left = std::uint32_t(nodes.size());
+        nodes.push_back({});
+        nodes.push_back({});
+        nodes[at].first = left;
+        nodes[at].count = 0;
+        if (depth < kParallelLevels && std::min(mid - begin, end - mid) >= kParallelItems) {
+            // The two sides in parallel, each into its own array, then laid out as the serial
+            // build lays them out: the same tree, byte for byte, whatever the thread count.
+            std::vector<BvhNode> sides[2];
+            int side_depth[2] = {depth + 1, depth + 1};
+            const auto side = [&](int k, std::uint32_t from, std::uint32_t to) {
+                sides[k].reserve(2 * std::size_t(to - from));
+                sides[k].push_back({});
+                build(sides[k], side_depth[k], 0, from, to, depth + 1);
+            };
+            tbb::parallel_invoke([&] { side(0, begin, mid); }, [&] { side(1, mid, end); });
+            for (int k = 0; k < 2; ++k) {
+                deepest = std::max(deepest, side_depth[k]);
+                // sides[k][0] goes to slot left + k, sides[k][i >= 1] to nodes.size() + i - 1.
+                const auto shift = std::uint32_t(nodes.size() - 1);
+                const auto moved = [&](BvhNode node) {
+                    if (!node.leaf()) node.first += shift;
+                    return node;
+                };
+                nodes[left + std::uint32_t(k)] = moved(sides[k][0]);
+                for (std::size_t i = 1; i < sides[k].size(); ++i) nodes.push_back(moved(sides[k][i]));
+            }
+            return;
+        }
+        build(nodes, deepest, left, begin, mid, depth + 1);
+        build(nodes, deepest, left + 1, mid, end, depth + 1);
     }
 };
 
@@ -147,7 +181,7 @@ FlatBvh build_bvh(std::span<const Box> boxes, unsigned max_leaf, unsigned lanes)
     for (std::uint32_t k = 0; k < bvh.items.size(); ++k) bvh.items[k] = k;
     bvh.nodes.reserve(2 * boxes.size());
     bvh.nodes.push_back({});
-    b.build(0, 0, std::uint32_t(boxes.size()), 0);
+    b.build(bvh.nodes, bvh.depth, 0, 0, std::uint32_t(boxes.size()), 0);
     bvh.nodes.shrink_to_fit();
     return bvh;
 }
