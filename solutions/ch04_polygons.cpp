@@ -19,11 +19,10 @@ std::array<int, 2> projection_axes(const Vec3& n) {
 }
 // @book-end
 
-// Contract (book §4.3): true if p is inside the polygon by the crossing number, with the
-// half-open boundary rule. A neighbour that shares an edge (the same two vertices, bit for bit)
-// must compute that edge's crossing to the same bits, so the edge's crossing x must not
-// depend on which polygon walks it or in which direction: then each point near or on the
-// shared edge is inside exactly one of the two.
+// The contract (geometry/polygon.hpp, book §4.3): the crossing number with the half-open
+// boundary rule, and a shared edge's crossing computed to the same bits by both polygons
+// that share it, whichever way each walks it: then every point on or ulps away from a shared
+// edge is inside exactly one of the two.
 // @book crossing
 bool inside_polygon_2d(const std::vector<Vec2>& polygon, const Vec2& p) {
     // @exercise 4.2 | inside_polygon_2d | book §4.3
