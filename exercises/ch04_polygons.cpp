@@ -22,6 +22,10 @@ std::array<int, 2> projection_axes(const Vec3& n) {
     // @end
 }
 
+// The contract (geometry/polygon.hpp, book §4.3): the crossing number with the half-open
+// boundary rule, and a shared edge's crossing computed to the same bits by both polygons
+// that share it, whichever way each walks it: then every point on or ulps away from a shared
+// edge is inside exactly one of the two.
 bool inside_polygon_2d(const std::vector<Vec2>& polygon, const Vec2& p) {
     RT_STUDENT_EXERCISE(4, 2);  // tells the grader this ran (core/exercise.hpp)
     // @exercise 4.2 | inside_polygon_2d | book §4.3

@@ -19,6 +19,10 @@ std::array<int, 2> projection_axes(const Vec3& n) {
 }
 // @book-end
 
+// The contract (geometry/polygon.hpp, book §4.3): the crossing number with the half-open
+// boundary rule, and a shared edge's crossing computed to the same bits by both polygons
+// that share it, whichever way each walks it: then every point on or ulps away from a shared
+// edge is inside exactly one of the two.
 // @book crossing
 bool inside_polygon_2d(const std::vector<Vec2>& polygon, const Vec2& p) {
     // @exercise 4.2 | inside_polygon_2d | book §4.3
@@ -28,7 +32,10 @@ bool inside_polygon_2d(const std::vector<Vec2>& polygon, const Vec2& p) {
     bool inside = false;
     const std::size_t m = polygon.size();
     for (std::size_t i = 0, j = m - 1; i < m; j = i++) {
-        const Vec2 &a = polygon[i], &b = polygon[j];
+        // Lower end first: a neighbour walks a shared edge the other way, and the crossing
+        // below, computed from a different end, would round differently there.
+        const bool rising = polygon[i].y < polygon[j].y;
+        const Vec2 &a = rising ? polygon[i] : polygon[j], &b = rising ? polygon[j] : polygon[i];
         if ((a.y > p.y) != (b.y > p.y)) {
             // x where the edge meets y = p.y; strictly right of p counts.
             const Real x = a.x + (p.y - a.y) * (b.x - a.x) / (b.y - a.y);

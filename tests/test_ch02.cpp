@@ -47,6 +47,12 @@ void miss_tangent_scale(RootsFn roots) {
     REQUIRE(roots(Ray{Vec3(3, 3, 3), Vec3(0, 2, 0)}, Vec3(3, 3, 3), 5, tn, tf));
     CHECK(tn == doctest::Approx(-2.5).epsilon(4 * kEps));
     CHECK(tf == doctest::Approx(2.5).epsilon(4 * kEps));
+    // Origin at the ray's closest approach to the centre, but not at the centre: b = f.d = 0
+    // (exactly), roots -+4/|d|. sign(b) must be +1 or -1 here: with glm::sign(0) = 0, q = 0
+    // and the stable form reports a false double root at 0 (or divides by 0).
+    REQUIRE(roots(Ray{Vec3(3, 0, 0), Vec3(0, 0, 2)}, Vec3(0), 5, tn, tf));
+    CHECK(tn == doctest::Approx(-2).epsilon(4 * kEps));
+    CHECK(tf == doctest::Approx(2).epsilon(4 * kEps));
 }
 
 TEST_CASE("2.1 course exercise 1: (1,1,1) + t(-1,-1,-1) meets the unit sphere at t = 1 -+ 1/sqrt(3)") {

@@ -47,7 +47,8 @@ void misses_and_intervals(TriangleFn fn) {
     CHECK(h.gamma == doctest::Approx(0.125).epsilon(4 * kEps));
     CHECK_FALSE(fn(r, a, b, c, Interval{0, 3.9}, h));
     CHECK_FALSE(fn(r, a, b, c, Interval{4.1, kInfinity}, h));
-    // In the triangle's plane: parallel, no hit.
+    // In the triangle's plane, across its interior: M = 0 (3.1) and det = U + V + W = 0
+    // (3.2), which the contract makes a miss, not a division by zero.
     CHECK_FALSE(fn(Ray{Vec3(-1, 0.5, 0), Vec3(1, 0, 0)}, a, b, c, Interval{}, h));
     // Every miss leaves the result alone: the library may pass in the best hit so far.
     CHECK(h.t == doctest::Approx(4).epsilon(4 * kEps));

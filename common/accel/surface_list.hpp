@@ -1,6 +1,8 @@
 #pragma once
 // The scene's surfaces, in one flat list (course §9.4): the brute-force search every
-// acceleration structure of chapters 10-12 must agree with, hit for hit.
+// acceleration structure of chapters 10-12 must agree with, hit for hit, except at exactly
+// equal t, where this list keeps the later surface and the structures (ranking with
+// closer()) the earlier one (book §5.3).
 #include "accel/surface.hpp"
 
 #include <string>

@@ -19,8 +19,12 @@ std::array<int, 2> projection_axes(const Vec3& n);
 // Exercise 4.2: the crossing-number test. True if p is inside the 2D polygon (any simple
 // polygon, convex or concave, either winding). On the boundary the rule is half-open: a point
 // on an edge or vertex counts as inside exactly when the point nudged infinitesimally right
-// (+x) and, by a far smaller step, up (+y) is inside. So two polygons that share an edge
-// claim each point of it exactly once: no gaps, no double hits (book §4.3).
+// (+x) and, by a far smaller step, up (+y) is inside. Each edge's crossing is computed from
+// its lower end, whichever way the polygon walks it, so two polygons that share an edge (the
+// same two vertices, bit for bit) round its crossing alike: every point that their union
+// contains, on or ulps away from the shared edge too, is inside exactly one of them (book
+// §4.3). In 3D, hit() keeps this only where both compute the same hit point: coplanar
+// polygons in a plane perpendicular to an axis.
 bool inside_polygon_2d(const std::vector<Vec2>& polygon, const Vec2& p);
 
 // What the polygon test finds.

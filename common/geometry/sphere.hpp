@@ -50,7 +50,10 @@ bool sphere_roots_textbook(const Ray& ray, const Vec3& center, Real radius, Real
 // away and rays over 0.999 of its silhouette, both roots within 64 machine epsilons
 // (relative) of a long-double reference and no false misses; for a ray leaving a sphere's
 // surface, the root at its origin within rounding of 0 (512 epsilons of the coordinates'
-// size, measured along the normal).
+// size, measured along the normal). In q = -(b + sign(b) sqrt(discriminant)), sign(0) is +1,
+// as std::copysign(x, b) gives it (-1 for b = -0.0, just as good): never 0, as glm::sign(0)
+// is, which makes q = 0 and a false double root for a ray whose closest approach to the
+// centre is its origin (b = 0).
 bool sphere_roots(const Ray& ray, const Vec3& center, Real radius, Real& t_near, Real& t_far);
 
 // Exercise 2.3: the first root in the interval (closed: both ends count). True and `result`

@@ -15,10 +15,13 @@ struct TriangleHit {
 
 // Exercise 3.1: Cramer's rule with the shared sub-terms and the course's early exits
 // (t, then gamma, then beta). True if t is in the interval and the point is in the triangle.
+// A zero determinant M (a ray parallel to the triangle's plane or in it) is a miss.
 bool ray_triangle(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c, Interval interval, TriangleHit& result);
 
 // Exercise 3.2: the watertight test of Woop, Benthin and Wald (2013). A ray through an edge
-// or vertex shared by two triangles (bit-identical vertices) hits at least one of them.
+// or vertex shared by two triangles (bit-identical vertices) hits at least one of them. A
+// zero determinant det = U + V + W (all three edge functions 0: a ray in the triangle's plane)
+// is a miss, even for a ray that runs across the triangle inside that plane.
 bool ray_triangle_watertight(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c, Interval interval,
                              TriangleHit& result);
 

@@ -35,8 +35,10 @@ struct Scene {
     AccelKind accel_kind = AccelKind::fast;
     std::shared_ptr<const Accel> accel;
     // A secondary ray that would carry less than this share of its pixel is not cast. Each
-    // glass hit splits a ray in two whose weights add up to at most its own, so this bounds
-    // a camera ray's tree to about 2 / min_reach rays, whatever max_depth allows (book §8.4).
+    // glass hit splits a ray in two whose weights add up to at most its own, so a camera
+    // ray's tree has at most 1 / min_reach ends, and (max_depth + 1) / min_reach rays: a
+    // chain of single rays of weight 1 (a perfect mirror, total internal reflection) still
+    // runs to max_depth (book §8.4).
     float min_reach = 1.0f / 1024;
     // Antialiasing (book §14): the pattern and filter of the pixel samples, and how many a
     // pixel takes (0: as the command line says, 1 by default). --pattern, --filter and --spp
