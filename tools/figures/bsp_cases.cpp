@@ -64,7 +64,9 @@ Canvas bsp_cases(const rt::Fields& in) {
             else
                 c.line(at(t), at(t1), Ink::guide, Stroke::dashed);
             c.dot(at(t), Ink::axis, true);
-            c.label(at(t), "t = " + number(double(t)), Ink::axis, 6, 4, Anchor::start, true);
+            // Right of the crossing, on the side of the line the ray leaves free.
+            const bool rising = (ray.direction.x > 0) == (ray.direction.y > 0);
+            c.label(at(t), "t = " + number(double(t)), Ink::axis, 6, rising ? -16 : 4, Anchor::start, true);
         } else {
             c.arrow(at(0), at(end), Ink::camera);
         }
