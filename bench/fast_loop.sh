@@ -55,12 +55,12 @@ for solution in sorted(glob.glob("solutions/ch*.cpp")):
                     lambda e: e.group(1) + m.group(2) + e.group(2), ex, count=1, flags=re.S)
     open(exercise, "w").write(ex)
 PY
-timed "./lab grade, first time (builds the exercises track)" "-" ./lab grade --solved "" --expect all
+timed "./lab grade, the first time (builds the exercises track)" "-" ./lab grade --solved "" --expect all
 edit_8_1 -1
 timed "./lab grade after a one-line edit in 8.1, all chapters" "<= 20 s" ./lab grade --expect all
 edit_8_1 -2
-timed "./lab grade 08 after a one-line edit in 8.1" "<= 8 s" ./lab grade 08 --expect all
-timed "./lab grade --solved \"01;02;03\" (was none)" "<= 60 s" ./lab grade --solved "01;02;03" --expect all
+timed "./lab grade 08 after another one-line edit in 8.1" "<= 8 s" ./lab grade 08 --expect all
+timed "./lab grade --solved \"01;02;03\" (was none): every chapter relinked and graded" "<= 60 s" ./lab grade --solved "01;02;03" --expect all
 
 if ((with_test)); then
     export CCACHE_DIR="$work/ccache-test"
