@@ -3,13 +3,14 @@
 
     python3 bench/stats_counts.py BIN_DIR OUT_DIR
 
-Renders the scenes §15.4 and §16.5 discuss with --stats and writes, into OUT_DIR
-(book/measured/), the trimmed --stats excerpts and the sentences that quote them:
+Renders the scenes §15.4 and §16.5 discuss with --stats (and picks §16.1's pixel) and writes,
+into OUT_DIR (book/measured/), the trimmed --stats excerpts and the sentences that quote them:
 
   ch15-penumbra-stats.md   penumbra at 64x48: the excerpt and what its counts add up to
   ch15-point-light.md      penumbra with a point light at the light's centre, and fence
   ch15-area-light-time.md  penumbra at 400x300 on one thread, area light against point light
   ch16-row-stats.md        row at 64x48: the excerpt and what its counts add up to
+  ch16-pick.md             the pinhole ray --pick traces in row (§16.1)
 
 Every count is exact (the same on every machine, until the code or the scene changes). The
 relations the chapters' prose relies on (two light numbers per light term, one shadow ray at
@@ -154,6 +155,14 @@ def main():
                f"the {shape['real']} build, `penumbra` took {a / b:.2f} times as long with its area light as with "
                f"the point light (processor time of the whole run, best of {ROUNDS}, the two alternating, on a "
                f"machine other programs share: only the ratio is quoted)."])
+
+    # §16.1: the pinhole ray --pick traces through a pixel of row.
+    pick = json.loads(subprocess.run([ch16, "--scene", "row", "--pick", "228,157"], check=True, capture_output=True,
+                                     text=True).stdout)
+    need(pick["surface"] == "ball 3", "row's pixel (228, 157) sees the third ball")
+    write(out_dir, "ch16-pick.md", stamp,
+          [f"In `row`, `--pick 228,157` finds the third ball at $t = {pick['t']:.2f}$, its front surface's depth "
+           f"(here $d = 1$)."])
 
     # §16.5: row's counts.
     r = stats(ch16, "row", *small)
