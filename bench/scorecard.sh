@@ -36,12 +36,16 @@ command=(./lab grade 01 02 03 --solved "01")
 python3 - "$work/grade.txt" "$out" "${command[*]}" <<'PY'
 import re, sys
 text, out, command = open(sys.argv[1]).read(), sys.argv[2], sys.argv[3]
-lines = [l for l in text.splitlines() if not l.startswith(("==", "lab:", "--", "[")) and l.strip()]
+lines = [l.rstrip() for l in text.splitlines() if not l.startswith(("==", "lab:", "--", "[")) and l.strip()]
 start = next(i for i, l in enumerate(lines) if l.startswith("grade: "))
 lines = lines[start:]
 rows = [l for l in lines if re.match(r"^ch\d\d\s", l) or l.startswith("chapter ")]
 def cut(l, width=330):
-    return l if len(l) <= width else l[:width - 40] + " ... " + l[-35:]
+    """A long failure line keeps its first captured input: 'check [a := 1; b := 2] (ran ...)' -> '[a := 1; ...]'."""
+    m = re.match(r"^(.*? \[.*?); .*(\] \(ran .*)$", l)
+    if len(l) <= width or not m:
+        return l
+    return m.group(1) + "; ..." + m.group(2)
 command = command.replace("--solved 01", '--solved "01"')
 with open(f"{out}/scorecard.md", "w") as f:
     f.write("```\n$ " + command + "\n" + "\n".join(cut(l) for l in lines) + "\n```\n")
@@ -52,8 +56,8 @@ two, three = r["02"], r["03"]
 if not (r["01"].group(2) == r["01"].group(3) and int(two.group(2)) < int(two.group(3)) and three.group(2) == "0"):
     sys.exit("scorecard: the rows no longer say what the book explains (01 full, 02 short of full, 03 none)")
 with open(f"{out}/scorecard-says.md", "w") as f:
-    f.write(f"Chapter 2 passes {two.group(2)} of its {two.group(3)} unit tests and {two.group(4)} of its "
-            f"{two.group(5)} golden images (renders compared with reference pictures, §0.7), with your code; "
+    golden = (f"all {two.group(5)} of its" if two.group(4) == two.group(5) else f"{two.group(4)} of its {two.group(5)}")
+    f.write(f"Chapter 2 passes {two.group(2)} of its {two.group(3)} unit tests and {golden} golden images (renders compared with reference pictures, §0.7), with your code; "
             f"chapter 1 came from `solutions/`; chapter 3 is not written yet.\n")
 print(open(f"{out}/scorecard.md").read())
 PY

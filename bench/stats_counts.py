@@ -7,10 +7,12 @@ Renders the scenes §15.4 and §16.5 discuss with --stats (and picks §16.1's pi
 into OUT_DIR (book/measured/), the trimmed --stats excerpts and the sentences that quote them:
 
   ch15-penumbra-stats.md   penumbra at 64x48: the excerpt and what its counts add up to
-  ch15-point-light.md      penumbra with a point light at the light's centre, and fence
+  ch15-point-light.md      penumbra with a point light at the light's centre
+  ch15-fence-stats.md      fence, where every camera ray makes a light term
   ch15-area-light-time.md  penumbra at 400x300 on one thread, area light against point light
   ch16-row-stats.md        row at 64x48: the excerpt and what its counts add up to
   ch16-pick.md             the pinhole ray --pick traces in row (§16.1)
+  ch02-stats-example.md    what --stats prints for chapter 2's first scene (§0.4)
 
 Every count is exact (the same on every machine, until the code or the scene changes). The
 relations the chapters' prose relies on (two light numbers per light term, one shadow ray at
@@ -79,8 +81,9 @@ def excerpt(command, st, shading):
 
 
 def write(out_dir, name, stamp, lines):
+    """Exact counts need no date (stamp None); a time or a program's whole output does."""
     with open(os.path.join(out_dir, name), "w") as f:
-        f.write("\n".join([stamp, ""] + lines).rstrip() + "\n")
+        f.write("\n".join(([stamp, ""] if stamp else []) + lines).rstrip() + "\n")
     print(f"== {name}\n" + "\n".join(lines))
 
 
@@ -118,7 +121,7 @@ def main():
     need(light == 2 * terms, "two light numbers per light term")
     need(shadow <= terms, "at most one shadow ray per light term")
     need(p["random_numbers"]["lens"] == 0 and p["random_numbers"]["time"] == 0, "no lens or time numbers")
-    write(out_dir, "ch15-penumbra-stats.md", stamp,
+    write(out_dir, "ch15-penumbra-stats.md", None,
           excerpt("build/release/bin/ch15 --scene penumbra --width 64 --height 48 --stats -o /tmp/p.png", p, True) +
           ["", f"There are $64 \\times 48 \\times {p['spp']} = {n(cam).replace(',', '{,}')}$ camera rays, and each "
            f"takes two numbers for its film position. {n(terms)} of them hit something and shade it with the one "
@@ -136,12 +139,13 @@ def main():
         f = stats(ch15, "fence", *small)
         fcam, fterms = f["rays"]["camera"], f["shading"]["light_terms"]
         need(fterms == fcam and f["rays"]["shadow"] == fcam, "in fence every camera ray makes a light term")
-        write(out_dir, "ch15-point-light.md", stamp,
+        write(out_dir, "ch15-point-light.md", None,
               [f"With the light replaced by a point light at its centre, the light terms are the same, {n(terms)}, "
                f"the light dimension draws nothing, and there are {n(q['rays']['shadow'])} shadow rays. The area "
-               f"light casts {n(shadow - q['rays']['shadow'])} more. In `fence` every camera ray hits the floor or a "
-               f"slat and every point faces the light: {n(fterms)} light terms, {n(f['random_numbers']['light'])} "
-               f"numbers and {n(f['rays']['shadow'])} shadow rays."])
+               f"light casts {n(shadow - q['rays']['shadow'])} more."])
+        write(out_dir, "ch15-fence-stats.md", None,
+              [f"In `fence` every camera ray hits the floor or a slat and every point faces the light: {n(fterms)} "
+               f"light terms, {n(f['random_numbers']['light'])} numbers and {n(f['rays']['shadow'])} shadow rays."])
 
         # §15.4: the time, as a ratio (absolute times move with the machine's load).
         # The two alternate, round after round, so that both see the same load.
@@ -156,11 +160,19 @@ def main():
                f"the point light (processor time of the whole run, best of {ROUNDS}, the two alternating, on a "
                f"machine other programs share: only the ratio is quoted)."])
 
+    # §0.4: what --stats prints, whole.
+    with tempfile.TemporaryDirectory() as tmp:
+        line = subprocess.run([os.path.join(bin_dir, "ch02"), "--stats", "-o", os.path.join(tmp, "s.png")],
+                              check=True, capture_output=True, text=True).stdout.strip().splitlines()[-1]
+    json.loads(line)
+    write(out_dir, "ch02-stats-example.md", stamp, ["```sh", "$ build/release/bin/ch02 --stats -o /tmp/s.png", line,
+                                                     "```"])
+
     # §16.1: the pinhole ray --pick traces through a pixel of row.
     pick = json.loads(subprocess.run([ch16, "--scene", "row", "--pick", "228,157"], check=True, capture_output=True,
                                      text=True).stdout)
     need(pick["surface"] == "ball 3", "row's pixel (228, 157) sees the third ball")
-    write(out_dir, "ch16-pick.md", stamp,
+    write(out_dir, "ch16-pick.md", None,
           [f"In `row`, `--pick 228,157` finds the third ball at $t = {pick['t']:.2f}$, its front surface's depth "
            f"(here $d = 1$)."])
 
@@ -170,7 +182,7 @@ def main():
     need(r["random_numbers"]["lens"] == 2 * rcam and r["random_numbers"]["pixel"] == 2 * rcam,
          "two film and two lens numbers per camera ray")
     need(r["random_numbers"]["light"] == 0 and r["random_numbers"]["time"] == 0, "no light or time numbers")
-    write(out_dir, "ch16-row-stats.md", stamp,
+    write(out_dir, "ch16-row-stats.md", None,
           excerpt("build/release/bin/ch16 --scene row --width 64 --height 48 --stats -o /tmp/r.png", r, False) +
           ["", f"Each of the {n(rcam)} camera rays draws two numbers for its film position and two for its place "
            f"on the lens."])
