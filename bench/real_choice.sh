@@ -1,8 +1,6 @@
 #!/usr/bin/env bash
 # Float against double, side by side in one run: the evidence for the default RTLAB_REAL.
 # Builds both presets, then alternates the two builds' runs so that both see the same load.
-# Last, callgrind counts the instructions a small render executes in each (valgrind), which
-# the load does not touch: float's gain is not in doing less work.
 #
 #   bench/real_choice.sh [rounds]
 set -euo pipefail
@@ -28,11 +26,3 @@ done
 d=$(printf '%s' "${times[release]}" | best)
 f=$(printf '%s' "${times[float]}" | best)
 echo "double $d s, float $f s, float/double = $(awk -v a="$f" -v b="$d" 'BEGIN{printf "%.3f", a/b}')"
-
-echo "== instructions (callgrind): ch02 far-sphere, 200x150, 1 thread"
-ir() {
-    valgrind --tool=callgrind --callgrind-out-file=/dev/null "build/$1/bin/ch02" --scene far-sphere --width 200 \
-        --height 150 --threads 1 -o "/tmp/rtlab-bench-$1.pfm" 2>&1 | sed -n 's/.*Collected : \([0-9]*\).*/\1/p'
-}
-echo "instructions: double $(ir release), float $(ir float)"
-

@@ -6,14 +6,13 @@ TABLE is bench/real_choice.sh's printed output (book/measured/real-choice.md hol
 three paragraphs §0.9 includes, every number read or computed from the table:
 
   real-choice-cost.md     the stable form's cost per call, and the textbook form's error and misses
-  real-choice-render.md   a whole render in float against double, as a ratio, and the
-                          instructions each executes
+  real-choice-render.md   a whole render in float against double, as a ratio
   real-choice-limits.md   where the stable form fails in float, and its worst error in double
 
 Errors and misses depend on the arithmetic only; times move with the machine's load, and are
 quoted as ratios measured in the same run. The chapter's reasoning relies on a few facts
 (the textbook form's error in double grows with the distance, no misses in double, float
-faster on the same count of instructions, give or take a tenth); a table that breaks one stops this script (exit 1) instead of writing a sentence
+faster); a table that breaks one stops this script (exit 1) instead of writing a sentence
 the prose would contradict.
 """
 
@@ -45,18 +44,10 @@ def load(path):
             m = re.match(r"^double ([\d.e+-]+) s, float ([\d.e+-]+) s", line)
             if m and render is not None:
                 render["double"], render["float"] = float(m.group(1)), float(m.group(2))
-                continue
-            m = re.match(r"^== instructions \(callgrind\): (.*)$", line)
-            if m and render is not None:
-                render["counted"] = m.group(1)
-                continue
-            m = re.match(r"^instructions: double (\d+), float (\d+)\s*$", line)
-            if m and render is not None:
-                render["double_ir"], render["float_ir"] = int(m.group(1)), int(m.group(2))
-    if set(tables) != {"double", "float"} or not all(t["rows"] for t in tables.values()) or not {
-            "double", "double_ir"} <= set(render or {}):
-        sys.exit(f"real_choice_summary.py: {path} lacks a double table, a float table, the renders or the "
-                 f"instruction counts")
+
+    if set(tables) != {"double", "float"} or not all(t["rows"] for t in tables.values()) or "double" not in (
+            render or {}):
+        sys.exit(f"real_choice_summary.py: {path} lacks a double table, a float table or the renders")
     return tables, render
 
 
@@ -99,14 +90,10 @@ def main():
             f"{n(worst['text_miss'])} of {n(rays)} at {power(worst['D'])}.")
 
     ratio = render["float"] / render["double"]
-    ir = render["float_ir"] / render["double_ir"]
     need(ratio < 1, "float renders faster than double")
-    need(0.9 < ir < 1.1, "float executes about as many instructions as double")
     speed = (f"The whole render ({render['what']}, best of {render['rounds']}) took {ratio:.2f} times as long in "
              f"float as in double ({render['float']:.3f} s against {render['double']:.3f} s, on a machine other "
-             f"programs share: the ratio is what to read), yet callgrind counts "
-             f"{render['float_ir'] / 1e6:.1f} million instructions in float against "
-             f"{render['double_ir'] / 1e6:.1f} million in double ({render['counted']}).")
+             f"programs share: the ratio is what to read).")
 
     failing = [r for r in flt if r["stable_miss"] > 0]
     need(failing, "the stable form misses in float at some distance")
