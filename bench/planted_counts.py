@@ -76,15 +76,17 @@ def groups(bin_dir, chapter, scene, first):
             for g in range(20)]
 
 
-def p(x):
+def p(x, digits=1):
     """A p-value as the book writes it: 2.0 × 10^-5, or 10^-17 when the mantissa is about 1."""
     if x == 0:
         return "0 (below what a double holds)"
-    m, e = f"{x:.1e}".split("e")
+    m, e = f"{x:.{digits}e}".split("e")
     e = int(e)
     if e > -3:
         return f"{x:.3g}"
-    return f"$10^{{{e + 1}}}$" if m == "10.0" else (f"$10^{{{e}}}$" if m == "1.0" else f"${m} \\times 10^{{{e}}}$")
+    if float(m) == 1.0:
+        return f"$10^{{{e}}}$"
+    return f"${m} \\times 10^{{{e}}}$"
 
 
 def n(x):
@@ -166,7 +168,7 @@ def main():
     write("ch16-by-hand.md", by_hand("planted_off_centre", 16, "row", "oc", row, row_ok))
     write("ch16-crowded.md",
           [f"With `planted_crowded_centre`, {n(crowded['failed'])} of `lights`' pixel-channels fail, with a "
-           f"smallest p of {p(crowded['smallest_p'])}, far below the level of {p(crowded['level'])}; on `row` the "
+           f"smallest p of {p(crowded['smallest_p'])}, far below the level of {p(crowded['level'], 2)}; on `row` the "
            f"same program passes."])
     write("ch16-false-alarms.md", [false_alarms(groups(bin_dir, 16, "row", 5000) +
                                                 groups(bin_dir, 16, "lights", 9000))])
