@@ -115,9 +115,9 @@ def false_alarms(results):
     failed = sum(not v["pass"] for v in results)
     need(failed <= 2, "at most one group of 20 fails, in each of the two scenes")
     smallest = min(v["smallest_p"] for v in results)
-    verdict_text = "no group fails" if failed == 0 else f"{failed} of the 40 groups fail"
-    return (f"With the chapter's own program (Real = {REAL}), {verdict_text}; the smallest p of the 40 groups is "
-            f"{p(smallest)}.")
+    verdict_text = "none fails" if failed == 0 else f"{failed} fail"
+    return (f"Of the 40 false-alarm groups, rendered by the chapter's own program (Real = {REAL}), {verdict_text}; "
+            f"the smallest p among them is {p(smallest)}.")
 
 
 def main():
