@@ -8,11 +8,12 @@
 # OUT_DIR/scorecard-rows.md (the rows alone) and OUT_DIR/scorecard-says.md (what the rows say).
 # Works on a fresh clone of the committed lab; builds the exercises track (minutes).
 #
-#   bench/scorecard.sh OUT_DIR [WORK_DIR]     (default: a new temporary folder)
+#   bench/scorecard.sh OUT_DIR [WORK_DIR]     (default: a new temporary folder, removed after)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=$(cd "${1:?usage: bench/scorecard.sh OUT_DIR [WORK_DIR]}" && pwd)
 work=${2:-$(mktemp -d /tmp/rtlab-scorecard.XXXXXX)}
+[[ -n ${2-} ]] || trap 'rm -rf "$work"' EXIT  # a folder of its own making goes when done
 rm -rf "$work/lab"
 git clone -q "$root" "$work/lab"
 cd "$work/lab"
