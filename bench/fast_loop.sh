@@ -5,14 +5,20 @@
 #   3. ./lab grade, every chapter, after a one-line change inside an exercise body (8.1)
 #   4. ./lab grade 08 after another one-line change there
 #   5. ./lab grade --solved "01;02;03" (a different set of chapters from solutions/)
+#   6. with --with-test: ./lab test on a fresh clone, with an empty compiler cache and again
+#      with the cache the first one filled (about half an hour more)
 # The student of 3-5 has written every exercise (the reference bodies, copied in), so every
 # chapter renders all of its images: the slowest case. The edits keep the answers right.
+# The last lines are the table: "LABEL  SECONDS s  TARGET" (./lab bench fast-loop makes book
+# §B.6's table of them, bench/fast_loop_table.py).
 #
-#   bench/fast_loop.sh [WORK_DIR]     (default: a new temporary folder; about 5 minutes)
+#   bench/fast_loop.sh [--with-test] [WORK_DIR]   (default: a new temporary folder; about 5 minutes)
 #
 # Timings belong here, not in tests: the machines are shared, so repeat a row that looks off.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
+with_test=0
+[[ ${1-} == --with-test ]] && { with_test=1; shift; }
 work=${1:-$(mktemp -d /tmp/rtlab-fast-loop.XXXXXX)}
 rm -rf "$work/lab" "$work/ccache"
 mkdir -p "$work"
@@ -49,11 +55,21 @@ for solution in sorted(glob.glob("solutions/ch*.cpp")):
                     lambda e: e.group(1) + m.group(2) + e.group(2), ex, count=1, flags=re.S)
     open(exercise, "w").write(ex)
 PY
-timed "./lab grade, first time (builds the exercises track)" "-" ./lab grade --solved "" --expect all
+timed "./lab grade, the first time (builds the exercises track)" "-" ./lab grade --solved "" --expect all
 edit_8_1 -1
 timed "./lab grade after a one-line edit in 8.1, all chapters" "<= 20 s" ./lab grade --expect all
 edit_8_1 -2
-timed "./lab grade 08 after a one-line edit in 8.1" "<= 8 s" ./lab grade 08 --expect all
-timed "./lab grade --solved \"01;02;03\" (was none)" "<= 60 s" ./lab grade --solved "01;02;03" --expect all
+timed "./lab grade 08 after another one-line edit in 8.1" "<= 8 s" ./lab grade 08 --expect all
+timed "./lab grade --solved \"01;02;03\" (was none): every chapter relinked and graded" "<= 60 s" ./lab grade --solved "01;02;03" --expect all
+
+if ((with_test)); then
+    export CCACHE_DIR="$work/ccache-test"
+    for cache in empty warm; do
+        cd "$work"
+        rm -rf "$work/test" && git clone -q "$root" "$work/test" && cd "$work/test"
+        [[ $cache == empty ]] && rm -rf "$CCACHE_DIR"
+        timed "./lab test, fresh clone, $cache compiler cache" "$([[ $cache == empty ]] && echo "<= 25 min" || echo "<= 12 min")" ./lab test
+    done
+fi
 echo
 printf '%s\n' "${rows[@]}"

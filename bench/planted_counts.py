@@ -1,0 +1,177 @@
+"""What the statistical test says about chapters 15 and 16's planted mistakes and correct
+renders, in the sentences §15.7 and §16.6 quote (./lab bench planted).
+
+    python3 bench/planted_counts.py BIN_DIR OUT_DIR
+
+Renders each scene as the statistical golden test does (tools/settings.cmake: 64x48, 16
+samples per pixel, seeds 101-108), with a planted program (tests/planted/) and with the
+chapter's own, and runs rtlab-stat against the scene's reference, as the ctest tests
+stat_catches_* do; and renders the false-alarm groups of stat_false_alarms_ch15_* and
+stat_false_alarms_ch16_* (20 groups of 8 seeds each). Writes into OUT_DIR (book/measured/):
+
+  ch15-planted.md          the unshuffled and corner programs' failures
+  ch15-by-hand.md          the unshuffled program on fence, as a reader types it, and ch15's
+  ch15-false-alarms.md     what the correct renders' 40 groups give
+  ch16-off-centre.md       the off-centre lens's failures
+  ch16-by-hand.md          the off-centre lens on row, as a reader types it, and ch16's
+  ch16-crowded.md          the crowded lens's failures
+  ch16-false-alarms.md     what the correct renders' 40 groups give
+
+Renders and verdicts are exact for a build (fixed seeds), so the numbers are the same on
+every run of one build. Where the chapters' prose depends on a verdict (each planted
+program fails where its test says, the crowded lens passes on the square lens of row, the
+correct renders pass with at most one group of 20 failing), a run that breaks it fails here
+(exit 1) instead of writing a sentence the prose would contradict.
+"""
+
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+
+def setting(name):
+    out = subprocess.run(["cmake", f"-DGET={name}", "-P", "tools/settings.cmake"], check=True, capture_output=True,
+                         text=True)
+    return (out.stdout + out.stderr).split()
+
+
+SIZE = setting("RTLAB_STAT_ARGS")  # --width 64 --height 48 --spp 16
+SEEDS = [int(s) for s in setting("RTLAB_STAT_SEEDS")]
+TOLERANCE = setting("RTLAB_STAT_TOLERANCE")
+REAL = "double"  # the build's Real, read from its --version in main()
+
+
+
+def need(condition, what):
+    if not condition:
+        sys.exit(f"planted_counts.py: the chapters' prose no longer holds: {what}")
+
+
+def verdict(bin_dir, program, chapter, scene, seeds):
+    """rtlab-stat's line and JSON for `program` rendering `scene` at `seeds`."""
+    with tempfile.TemporaryDirectory() as tmp:
+        images = []
+        for s in seeds:
+            image = os.path.join(tmp, f"{scene}-{s}.pfm")
+            subprocess.run([os.path.join(bin_dir, program), "--scene", scene, *SIZE, "--seed", str(s), "-o", image],
+                           check=True, capture_output=True)
+            images.append(image)
+        ref = f"tests/golden/ch{chapter}/{scene}"
+        js = os.path.join(tmp, "v.json")
+        run = subprocess.run([os.path.join(bin_dir, "rtlab-stat"), "test", f"{ref}.mean.pfm", f"{ref}.var.pfm",
+                              *images, *TOLERANCE, "--json", js], capture_output=True, text=True)
+        need(run.returncode in (0, 1), f"rtlab-stat ran on {program} {scene}: {run.stderr.strip()}")
+        with open(js) as f:
+            v = json.load(f)
+    v["line"] = run.stdout.strip()
+    print(f"{program} {scene} {seeds[0]}..{seeds[-1]}: {v['line']}", file=sys.stderr)
+    return v
+
+
+def groups(bin_dir, chapter, scene, first):
+    n = len(SEEDS)
+    return [verdict(bin_dir, f"ch{chapter}", chapter, scene, list(range(first + g * n, first + (g + 1) * n)))
+            for g in range(20)]
+
+
+def p(x, digits=1):
+    """A p-value as the book writes it: 2.0 × 10^-5, or 10^-17 when the mantissa is about 1."""
+    if x == 0:
+        return "0 (below what a double holds)"
+    m, e = f"{x:.{digits}e}".split("e")
+    e = int(e)
+    if e > -3:
+        return f"{x:.3g}"
+    if float(m) == 1.0:
+        return f"$10^{{{e}}}$"
+    return f"${m} \\times 10^{{{e}}}$"
+
+
+def n(x):
+    return f"{x:,}"
+
+
+def by_hand(program, chapter, scene, short, v, correct):
+    prefix = f"build/release/bin/{program} --scene {scene} {' '.join(SIZE)}"
+    ref = f"tests/golden/ch{chapter}/{scene}"
+    return ["```text",
+            f"$ for s in $(seq {SEEDS[0]} {SEEDS[-1]}); do",
+            f"    {prefix} \\",
+            f"        --seed $s -o /tmp/{short}-$s.pfm",
+            "  done",
+            f"$ build/release/bin/rtlab-stat test {ref}.mean.pfm {ref}.var.pfm \\",
+            f"      /tmp/{short}-*.pfm --map /tmp/map.png",
+            v["line"],
+            "```", "",
+            f"With `build/release/bin/ch{chapter}` in place of the planted program, the same seeds give "
+            f"`{correct['failed']} fail ... {'pass' if correct['pass'] else 'FAIL'}; smallest p "
+            f"{correct['smallest_p']:.3g}`."]
+
+
+def false_alarms(results):
+    """The sentence for a chapter's 40 groups of correct renders."""
+    failed = sum(not v["pass"] for v in results)
+    need(failed <= 2, "at most one group of 20 fails, in each of the two scenes")
+    smallest = min(v["smallest_p"] for v in results)
+    verdict_text = "none fails" if failed == 0 else f"{failed} fail"
+    return (f"Of the 40 false-alarm groups, rendered by the chapter's own program (Real = {REAL}), {verdict_text}; "
+            f"the smallest p among them is {p(smallest)}.")
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit("usage: planted_counts.py BIN_DIR OUT_DIR")
+    bin_dir, out_dir = sys.argv[1:]
+    global REAL
+    version = subprocess.run([os.path.join(bin_dir, "ch15"), "--version"], check=True, capture_output=True,
+                             text=True).stdout
+    REAL = version.split("Real=", 1)[1].split(",", 1)[0]
+
+    def write(name, lines):  # exact for a build: no date
+        with open(os.path.join(out_dir, name), "w") as f:
+            f.write("\n".join(lines).rstrip() + "\n")
+        print(f"== {name}\n" + "\n".join(lines))
+
+    # Chapter 15.
+    fence = verdict(bin_dir, "planted_unshuffled", 15, "fence", SEEDS)
+    fence_ok = verdict(bin_dir, "ch15", 15, "fence", SEEDS)
+    penumbra = verdict(bin_dir, "planted_unshuffled", 15, "penumbra", SEEDS)
+    corner = verdict(bin_dir, "planted_corner", 15, "penumbra", SEEDS)
+    need(not fence["pass"] and not penumbra["pass"] and not corner["pass"], "the planted ch15 programs fail")
+    need(fence_ok["pass"], "ch15 passes fence at the test's seeds")
+    need(fence["failed"] > penumbra["failed"], "the unshuffled program fails fence more plainly than penumbra")
+    write("ch15-planted.md",
+          [f"With `planted_unshuffled`, {n(fence['failed'])} of `fence`'s {n(fence['tests'])} pixel-channels fail, "
+           f"with a smallest p of {p(fence['smallest_p'])}: the columns of the map in §15.2. The same program fails "
+           f"`penumbra` too, with {n(penumbra['failed'])}, but the fence was built to make the mistake unmistakable. "
+           f"With `planted_corner`, {n(corner['failed'])} of `penumbra`'s pixel-channels fail."])
+    write("ch15-by-hand.md", by_hand("planted_unshuffled", 15, "fence", "fence", fence, fence_ok))
+    write("ch15-false-alarms.md", [false_alarms(groups(bin_dir, 15, "penumbra", 5000) +
+                                                groups(bin_dir, 15, "fence", 9000))])
+
+    # Chapter 16.
+    row = verdict(bin_dir, "planted_off_centre", 16, "row", SEEDS)
+    row_ok = verdict(bin_dir, "ch16", 16, "row", SEEDS)
+    lights = verdict(bin_dir, "planted_off_centre", 16, "lights", SEEDS)
+    crowded = verdict(bin_dir, "planted_crowded_centre", 16, "lights", SEEDS)
+    crowded_row = verdict(bin_dir, "planted_crowded_centre", 16, "row", SEEDS)
+    need(not row["pass"] and not lights["pass"] and not crowded["pass"], "the planted ch16 programs fail")
+    need(row_ok["pass"], "ch16 passes row at the test's seeds")
+    need(crowded_row["pass"], "the crowded lens passes on row's square lens")
+    need(crowded["failed"] < 100 and crowded["smallest_p"] < crowded["level"] / 1000,
+         "the crowded lens fails few pixel-channels, by far")
+    write("ch16-off-centre.md",
+          [f"With `planted_off_centre`, {n(row['failed'])} of `row`'s {n(row['tests'])} pixel-channels fail (on "
+           f"`lights`, {n(lights['failed'])})."])
+    write("ch16-by-hand.md", by_hand("planted_off_centre", 16, "row", "oc", row, row_ok))
+    write("ch16-crowded.md",
+          [f"With `planted_crowded_centre`, {n(crowded['failed'])} of `lights`' pixel-channels fail, with a "
+           f"smallest p of {p(crowded['smallest_p'])}, far below the level of {p(crowded['level'], 2)}; on `row` the "
+           f"same program passes."])
+    write("ch16-false-alarms.md", [false_alarms(groups(bin_dir, 16, "row", 5000) +
+                                                groups(bin_dir, 16, "lights", 9000))])
+
+
+main()
