@@ -6,11 +6,12 @@
 
 #include <tiny_obj_loader.h>
 
+#include <algorithm>
 #include <cctype>
 #include <charconv>
 #include <cmath>
-#include <sstream>
 #include <stdexcept>
+#include <string_view>
 
 namespace rt {
 
@@ -21,11 +22,28 @@ namespace {
         one_line("mesh " + name + (line ? ":" + std::to_string(line) : std::string()) + ": " + message));
 }
 
+// The whitespace-separated words of a line, as `>>` would read them, without a stream:
+// building an istringstream per line cost more than tinyobjloader's whole parse.
+struct Words {
+    std::string_view rest;
+    bool next(std::string_view& word) {
+        const auto space = [](char c) { return std::isspace(static_cast<unsigned char>(c)) != 0; };
+        std::size_t k = 0;
+        while (k < rest.size() && space(rest[k])) ++k;
+        if (k == rest.size()) return false;
+        std::size_t e = k;
+        while (e < rest.size() && !space(rest[e])) ++e;
+        word = rest.substr(k, e - k);
+        rest.remove_prefix(e);
+        return true;
+    }
+};
+
 // A coordinate that is a number, finite in double, and nothing else. tinyobjloader reads
 // anything else as 0 ("nan", "abc", "0x1p3") and 1e400 as infinity, without a word.
 // from_chars takes the number's whole text or says where it stopped; it refuses 1e400 as
 // out of range and reads "nan" and "inf", which isfinite then refuses.
-bool finite_number(const std::string& token) {
+bool finite_number(std::string_view token) {
     const bool plus = token[0] == '+' && token.size() > 1 && token[1] != '-';  // from_chars takes '-', not '+'
     const char* end = token.data() + token.size();
     double value = 0;
@@ -35,13 +53,14 @@ bool finite_number(const std::string& token) {
 
 // The three coordinates of a "v" or "vn" line (what follows them, a w or a colour, is not
 // read): each a finite number.
-void check_coordinates(std::istringstream& fields, const std::string& name, std::size_t line, const char* what) {
-    std::string token;
+void check_coordinates(Words fields, const std::string& name, std::size_t line, const char* what) {
+    std::string_view token;
     for (int k = 0; k < 3; ++k) {
-        if (!(fields >> token) || token[0] == '#')
+        if (!fields.next(token) || token[0] == '#')
             fail(name, line, std::string(what) + " has " + std::to_string(k) + " coordinates, not 3");
         if (!finite_number(token))
-            fail(name, line, std::string(what) + " coordinate '" + token.substr(0, 40) + "' is not a finite number");
+            fail(name, line,
+                 std::string(what) + " coordinate '" + std::string(token.substr(0, 40)) + "' is not a finite number");
     }
 }
 
@@ -50,35 +69,35 @@ void check_coordinates(std::istringstream& fields, const std::string& name, std:
 // a number as 0, and gives no line numbers. Also enforces the count limits before any
 // memory is spent on them.
 void check_counts_and_indices(const std::string& text, const std::string& name) {
-    std::istringstream in(text);
-    std::string line;
     std::size_t number = 0;
     double vertices = 0, triangles = 0;
     long long highest = 0;  // the highest positive index, and where it is
     std::size_t highest_line = 0;
-    while (std::getline(in, line)) {
+    for (std::size_t at = 0; at < text.size();) {
+        const std::size_t newline = std::min(text.find('\n', at), text.size());
+        const std::string_view line(text.data() + at, newline - at);
+        at = newline + 1;
         ++number;
-        std::size_t i = line.find_first_not_of(" \t");
-        if (i != std::string::npos && line.compare(i, 2, "vn") == 0 && i + 2 < line.size() &&
+        const std::size_t i = line.find_first_not_of(" \t");
+        if (i != std::string_view::npos && line.substr(i, 2) == "vn" && i + 2 < line.size() &&
             std::isspace(static_cast<unsigned char>(line[i + 2]))) {
-            std::istringstream fields(line.substr(i + 2));
-            check_coordinates(fields, name, number, "vertex normal");
+            check_coordinates(Words{line.substr(i + 2)}, name, number, "vertex normal");
             continue;
         }
-        if (i == std::string::npos || i + 1 >= line.size() || !std::isspace(static_cast<unsigned char>(line[i + 1])))
+        if (i == std::string_view::npos || i + 1 >= line.size() ||
+            !std::isspace(static_cast<unsigned char>(line[i + 1])))
             continue;
         if (line[i] == 'v') {
             if (++vertices > limits::mesh_vertices.max)
                 fail(name, number, limits::refuse(limits::mesh_vertices, vertices));
-            std::istringstream fields(line.substr(i + 1));
-            check_coordinates(fields, name, number, "vertex");
+            check_coordinates(Words{line.substr(i + 1)}, name, number, "vertex");
             continue;
         }
         if (line[i] != 'f') continue;
-        std::istringstream corners(line.substr(i + 1));
-        std::string corner;
+        Words corners{line.substr(i + 1)};
+        std::string_view corner;
         int count = 0;
-        while (corners >> corner) {
+        while (corners.next(corner)) {
             ++count;
             // The vertex index: an optional sign and digits, before any '/'.
             std::size_t k = 0;
@@ -90,7 +109,8 @@ void check_counts_and_indices(const std::string& text, const std::string& name) 
                 digits = true;
                 index = index < 1000000000000LL ? index * 10 + (corner[k] - '0') : index;  // saturate
             }
-            if (!digits) fail(name, number, "face corner '" + corner.substr(0, 40) + "' has no vertex index");
+            if (!digits)
+                fail(name, number, "face corner '" + std::string(corner.substr(0, 40)) + "' has no vertex index");
             if (index == 0) fail(name, number, "vertex index 0 (OBJ counts vertices from 1)");
             if (negative && double(index) > vertices)
                 fail(name, number,
