@@ -17,6 +17,12 @@ struct RenderOptions {
     std::uint64_t seed = 0;     // selects every pixel's random stream
     int threads = 0;            // 0 = all cores
     bool progress = false;      // progress bar on stderr
+    // A progressive pass (the explorer, common/app/explore*): only samples [first_sample,
+    // first_sample + sample_count) of the spp a pixel takes, averaged; 0 = all of them. The
+    // passes of one image are its samples in order, so their running mean converges to the
+    // image a single render makes.
+    int first_sample = 0;
+    int sample_count = 0;
 };
 
 struct RenderResult {
