@@ -91,6 +91,12 @@ int explore(const ChapterApp& app, const ChapterApp::Invocation& inv) {
     // Long-polled frames each hold a worker: enough of them for a few tabs' connections.
     server.new_task_queue = [] { return new httplib::ThreadPool(24); };
     server.set_keep_alive_timeout(2);
+    // Not httplib's default SO_REUSEPORT: a second explorer on a taken port is refused, not
+    // given half the connections.
+    server.set_socket_options([](socket_t sock) {
+        int yes = 1;
+        setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, reinterpret_cast<const void*>(&yes), sizeof yes);
+    });
     server.set_read_timeout(5);
     server.set_payload_max_length(std::size_t(limits::scene_file_bytes.max));
 

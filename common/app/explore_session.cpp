@@ -332,6 +332,9 @@ void ExploreSession::loop() {
             fresh = false;
             RenderOptions pass = o;
             pass.first_sample = shrink > 1 ? 0 : samples;
+            // Each pass its own random numbers (a pixel's streams run in order, so pass k cannot
+            // take sample k's numbers of one render): still the same for the same --seed.
+            pass.seed = o.seed ^ (std::uint64_t(pass.first_sample) * 0x9E3779B97F4A7C15ull);
             pass.width = std::max(1, o.width / shrink);
             pass.height = std::max(1, o.height / shrink);
             const RenderResult r = render(*scene_, pass);

@@ -17,10 +17,10 @@ struct RenderOptions {
     std::uint64_t seed = 0;     // selects every pixel's random stream
     int threads = 0;            // 0 = all cores
     bool progress = false;      // progress bar on stderr
-    // A progressive pass (the explorer, common/app/explore*): only samples [first_sample,
-    // first_sample + sample_count) of the spp a pixel takes, averaged; 0 = all of them. The
-    // passes of one image are its samples in order, so their running mean converges to the
-    // image a single render makes.
+    // A progressive pass (the explorer, common/app/explore*): only the samples [first_sample,
+    // first_sample + sample_count) of a pixel's spp (the pattern's strata, in order), averaged;
+    // 0 = all of them. Their random numbers start each pixel's streams afresh: a pass gives
+    // the same image as a whole render only from sample 0 (the explorer seeds each pass apart).
     int first_sample = 0;
     int sample_count = 0;
 };
