@@ -112,6 +112,7 @@ int explore(const ChapterApp& app, const ChapterApp::Invocation& inv) {
             res.set_content(text, f.type);
         });
 
+    server.Get("/favicon.ico", [](const httplib::Request&, httplib::Response& res) { res.status = 204; });
     server.Get("/api/state", [&](const httplib::Request&, httplib::Response& res) {
         res.set_content(s.state().dump(-1, ' ', false, json::error_handler_t::replace), "application/json");
     });

@@ -471,6 +471,7 @@ function drawRays() {
       }
     });
   }
+  rtlab.raysDrawn = segments.length;
   rays.render(overlay, threeCamera());
 }
 
@@ -503,9 +504,20 @@ function hover(e) {
   tip.style.display = 'block';
 }
 
+// Compiles the line and dot shaders once at the start, so that the first click does not pay
+// for it (software WebGL takes a few hundred milliseconds).
+function warmUp() {
+  const line = new THREE.Line(new THREE.BufferGeometry().setFromPoints([new THREE.Vector3(0, 0, 0), new THREE.Vector3(1, 1, 1)]),
+    new THREE.LineBasicMaterial({depthTest: false}));
+  const dot3 = new THREE.Mesh(new THREE.SphereGeometry(0.01, 8, 6), new THREE.MeshBasicMaterial({depthTest: false}));
+  overlay.add(line, dot3);
+  rays.render(overlay, threeCamera());
+}
+
 (async () => {
   try {
     await loadState(true);
+    warmUp();
     drawRays();
     frameLoop();
   } catch (e) {
