@@ -9,7 +9,6 @@
 #include "render/integrators.hpp"
 
 #include <filesystem>
-#include <future>
 
 namespace rt {
 
@@ -221,29 +220,19 @@ std::shared_ptr<const ExploreFrame> ExploreSession::frame_after(std::uint64_t af
 }
 
 json ExploreSession::pick(int x, int y) {
-    auto result = std::make_shared<std::promise<json>>();
-    std::future<json> answer = result->get_future();
-    {
-        std::lock_guard lock(mutex_);
-        jobs_.push_back([this, x, y, result] {
-            try {
-                const RenderOptions o = options_for(*scene_, render_invocation_);
-                const Pick p = rt::pick(*scene_, o, x, y);
-                json j = pick_json(scene_name_, *scene_, x, y, p);
-                if (!p.tree.nodes.empty())  // the title and colour --svg gives it
-                    j["svg"] =
-                        ray_tree_svg(*scene_, p.tree,
-                                     scene_name_ + ", pixel " + std::to_string(x) + "," + std::to_string(y), p.color);
-                result->set_value(std::move(j));
-            } catch (const std::exception& e) {
-                result->set_value(json{{"error", one_line(e.what())}});
-            }
-        });
+    std::shared_lock lock(scene_mutex_);
+    if (!scene_) return json{{"error", "the scene is not loaded yet"}};
+    try {
+        const RenderOptions o = options_for(*scene_, render_invocation_);
+        const Pick p = rt::pick(*scene_, o, x, y);
+        json j = pick_json(scene_name_, *scene_, x, y, p);
+        if (!p.tree.nodes.empty())  // the title and colour --svg gives it
+            j["svg"] = ray_tree_svg(*scene_, p.tree,
+                                    scene_name_ + ", pixel " + std::to_string(x) + "," + std::to_string(y), p.color);
+        return j;
+    } catch (const std::exception& e) {
+        return json{{"error", one_line(e.what())}};
     }
-    changed_.notify_all();
-    if (answer.wait_for(std::chrono::seconds(30)) != std::future_status::ready)
-        return json{{"error", "the render thread did not answer within 30 s"}};
-    return answer.get();
 }
 
 std::string ExploreSession::render_error() const {
@@ -292,10 +281,9 @@ void ExploreSession::loop() {
     for (;;) {
         Settings taken;
         bool changed = false;
-        std::deque<std::function<void()>> jobs;
         {
             std::unique_lock lock(mutex_);
-            changed_.wait(lock, [&] { return stop_ || dirty_ || !jobs_.empty() || (ready && samples < o.spp); });
+            changed_.wait(lock, [&] { return stop_ || dirty_ || (ready && samples < o.spp); });
             if (stop_) return;
             if (dirty_) {
                 taken = std::move(pending_);
@@ -303,9 +291,9 @@ void ExploreSession::loop() {
                 dirty_ = false;
                 changed = true;
             }
-            jobs.swap(jobs_);
         }
         if (changed) {
+            std::unique_lock write(scene_mutex_);
             apply(taken);
             ++generation;
             try {
@@ -319,7 +307,6 @@ void ExploreSession::loop() {
             fresh = true;
             sum.assign(std::size_t(o.width) * std::size_t(o.height) * 3, 0.0);
         }
-        for (auto& job : jobs) job();
         if (!ready || samples >= o.spp) continue;
 
         auto frame = std::make_shared<ExploreFrame>();
@@ -337,7 +324,9 @@ void ExploreSession::loop() {
             pass.seed = o.seed ^ (std::uint64_t(pass.first_sample) * 0x9E3779B97F4A7C15ull);
             pass.width = std::max(1, o.width / shrink);
             pass.height = std::max(1, o.height / shrink);
+            std::shared_lock read(scene_mutex_);
             const RenderResult r = render(*scene_, pass);
+            read.unlock();
             frame->width = pass.width;
             frame->height = pass.height;
             frame->render_ms = r.seconds * 1000;

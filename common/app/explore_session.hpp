@@ -2,8 +2,9 @@
 // The explorer's state: one scene, one camera, one set of options, and the thread that
 // renders them progressively into a shared frame buffer (the course's FAQ: "multiple CPUs
 // with a shared frame buffer"). The page's requests change them; the render thread applies
-// each change between passes, so the scene is only ever touched by that thread and nothing
-// it reads changes under it. Picks run there too, between two passes.
+// each change between passes, under an exclusive lock; a pass, and a pick, read the scene
+// under a shared one. So a pick never waits for a pass, and nothing a pass reads changes
+// under it.
 #include "app/app.hpp"
 #include "app/explore_frame.hpp"
 
@@ -11,11 +12,10 @@
 
 #include <chrono>
 #include <condition_variable>
-#include <deque>
-#include <functional>
 #include <memory>
 #include <mutex>
 #include <optional>
+#include <shared_mutex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -46,8 +46,7 @@ public:
     std::shared_ptr<const ExploreFrame> frame_after(std::uint64_t after, std::chrono::milliseconds wait) const;
 
     // What --pick prints for pixel (x, y) of the full-size view, with the ray tree's SVG
-    // side view as "svg" when there is a tree; or a "error" line. Waits for the render
-    // thread to finish its pass.
+    // side view as "svg" when there is a tree; or an "error" line.
     nlohmann::json pick(int x, int y);
 
     // Why the last pass failed (an unfinished exercise, say), or "" while passes succeed.
@@ -73,7 +72,6 @@ private:
     mutable std::condition_variable framed_;   // frame_after waits on it
     Settings pending_;
     bool dirty_ = false, stop_ = false;
-    std::deque<std::function<void()>> jobs_;
     std::shared_ptr<const ExploreFrame> frame_;
     std::string render_error_;
     ChapterApp::Invocation invocation_;  // as last set (the render thread's may lag a pass)
@@ -82,7 +80,8 @@ private:
     int scene_samples_ = 0, scene_depth_ = 0;
     AccelKind scene_accel_ = AccelKind::fast;
 
-    // The render thread's own.
+    // Written by the render thread only, under an exclusive lock of scene_mutex_.
+    mutable std::shared_mutex scene_mutex_;
     std::shared_ptr<Scene> scene_;
     ChapterApp::Invocation render_invocation_;
     std::thread thread_;
