@@ -92,7 +92,8 @@ try:
     rays = driver.find_elements(By.CSS_SELECTOR, "#tree li")
     check(len(rays) == count(cli["tree"]) and len(rays) > 2, f"one line per ray of the tree: {len(rays)}")
     check(rays and rays[0].text.startswith("camera") and cli["surface"] in rays[0].text, "the first is the camera ray")
-    check(driver.execute_script("return document.querySelector('#svg svg') !== null"), "the SVG side view is shown")
+    check(wait_for(driver, "const i = document.querySelector('#svg img'); return i && i.complete && i.naturalWidth > 0", 30),
+          "the SVG side view is shown")
     check(driver.execute_script("return window.rtlab.raysDrawn") == len(rays), "every ray is drawn in 3D")
     latency = driver.execute_script("return window.rtlab.clickLatencies[0]")
     print(f"click to ray tree: {latency:.0f} ms")

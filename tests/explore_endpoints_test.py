@@ -141,8 +141,13 @@ try:
     picked = json.loads(body)
     cli = json.loads(subprocess.run([ch07, "--scene", str(SCENE), "--width", str(W), "--height", str(H),
                                      "--pick", "70,20"], check=True, capture_output=True, text=True).stdout)
-    check(status == 200 and picked.pop("svg", "").startswith("<svg"), "a pick carries the SVG side view")
-    check(picked == cli, "a pick is exactly what --pick prints")
+    check(status == 200 and picked == cli, "a pick is exactly what --pick prints")
+    status, headers, body = request("/api/tree.svg?x=70&y=20")
+    svg_file = work / "tree.svg"
+    subprocess.run([ch07, "--scene", str(SCENE), "--width", str(W), "--height", str(H), "--pick", "70,20",
+                    "--svg", str(svg_file)], check=True, capture_output=True)
+    check(status == 200 and headers["Content-Type"] == "image/svg+xml" and body == svg_file.read_bytes(),
+          "the side view is what --svg draws")
 
     # Bad requests: a 4xx and a line naming the problem; the server carries on.
     bad = [
@@ -153,6 +158,7 @@ try:
         ("/api/pick?x=5", None, 400, "missing parameter 'y'"),
         (f"/api/pick?x={W}&y=0", None, 400, f"is outside the {W}x{H} image"),
         ("/api/pick?x=1e3&y=0", None, 400, "parameter 'x'"),
+        ("/api/tree.svg?y=0", None, 400, "missing parameter 'x'"),
         ("/nothing/here", None, 404, "no such page: GET /nothing/here"),
         ("/api/options", "{\"spp\": 4}", 400, "a JSON array of strings"),
         ("/api/options", "not json", 400, "a JSON array of strings"),

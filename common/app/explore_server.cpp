@@ -168,16 +168,19 @@ int explore(const ChapterApp& app, const ChapterApp::Invocation& inv) {
         }
         answer(res, s.set_options(list));
     });
-    // GET /api/pick?x=X&y=Y: what --pick X,Y prints, and the SVG of --svg.
-    server.Get("/api/pick", [&](const httplib::Request& req, httplib::Response& res) {
+    // GET /api/pick?x=X&y=Y: what --pick X,Y prints; GET /api/tree.svg?x=X&y=Y: what --svg draws.
+    const auto pick = [&](const httplib::Request& req, httplib::Response& res, bool svg) {
         const auto x = number_param(req, res, "x", limits::image_side.max);
         if (!x) return;
         const auto y = number_param(req, res, "y", limits::image_side.max);
         if (!y) return;
-        const json j = s.pick(int(*x), int(*y));
+        const json j = s.pick(int(*x), int(*y), svg);
         if (j.contains("error")) return fail(res, 400, j["error"].get<std::string>());
+        if (svg) return res.set_content(j["svg"].get<std::string>(), "image/svg+xml");
         res.set_content(j.dump(-1, ' ', false, json::error_handler_t::replace), "application/json");
-    });
+    };
+    server.Get("/api/pick", [&](const httplib::Request& req, httplib::Response& res) { pick(req, res, false); });
+    server.Get("/api/tree.svg", [&](const httplib::Request& req, httplib::Response& res) { pick(req, res, true); });
 
     server.set_error_handler([](const httplib::Request& req, httplib::Response& res) {
         if (res.status == 404)

@@ -219,17 +219,20 @@ std::shared_ptr<const ExploreFrame> ExploreSession::frame_after(std::uint64_t af
     return frame_;
 }
 
-json ExploreSession::pick(int x, int y) {
+json ExploreSession::pick(int x, int y, bool svg) {
     std::shared_lock lock(scene_mutex_);
     if (!scene_) return json{{"error", "the scene is not loaded yet"}};
     try {
         const RenderOptions o = options_for(*scene_, render_invocation_);
         const Pick p = rt::pick(*scene_, o, x, y);
-        json j = pick_json(scene_name_, *scene_, x, y, p);
-        if (!p.tree.nodes.empty())  // the title and colour --svg gives it
-            j["svg"] = ray_tree_svg(*scene_, p.tree,
-                                    scene_name_ + ", pixel " + std::to_string(x) + "," + std::to_string(y), p.color);
-        return j;
+        if (!svg) return pick_json(scene_name_, *scene_, x, y, p);
+        if (p.tree.nodes.empty())
+            return json{
+                {"error", "scene '" + scene_name_ + "' is shaded without a ray tree; use \"shading\": \"whitted\""}};
+        // The title and colour --svg gives it.
+        return json{
+            {"svg", ray_tree_svg(*scene_, p.tree,
+                                 scene_name_ + ", pixel " + std::to_string(x) + "," + std::to_string(y), p.color)}};
     } catch (const std::exception& e) {
         return json{{"error", one_line(e.what())}};
     }

@@ -45,9 +45,10 @@ public:
     // (null before the first).
     std::shared_ptr<const ExploreFrame> frame_after(std::uint64_t after, std::chrono::milliseconds wait) const;
 
-    // What --pick prints for pixel (x, y) of the full-size view, with the ray tree's SVG
-    // side view as "svg" when there is a tree; or an "error" line.
-    nlohmann::json pick(int x, int y);
+    // What --pick prints for pixel (x, y) of the full-size view, or an "error" line. With
+    // `svg`, only the ray tree's side view as --svg draws it, as "svg" (the page asks for it
+    // apart: for a scene of many surfaces it takes longer than the pick).
+    nlohmann::json pick(int x, int y, bool svg = false);
 
     // Why the last pass failed (an unfinished exercise, say), or "" while passes succeed.
     std::string render_error() const;

@@ -412,7 +412,11 @@ function showPick(p) {
     li.addEventListener('mouseleave', () => { hot = -1; li.classList.remove('hot'); drawRays(); });
     list.append(li);
   });
-  $('svg').innerHTML = p.svg ?? '<p class="hint">This chapter\'s shading records no ray tree (chapters 01-05).</p>';
+  // The side view (--svg) as an image: drawn once, not again with every frame; fetched after
+  // the numbers and the 3D rays, which do not wait for it.
+  $('svg').innerHTML = p.tree
+    ? `<img alt="the ray tree seen from the side" src="/api/tree.svg?x=${p.pixel[0]}&y=${p.pixel[1]}&g=${rtlab.generation}">`
+    : '<p class="hint">This scene\'s shading records no ray tree (use whitted).</p>';
 }
 
 function describe(n) {
