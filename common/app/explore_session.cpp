@@ -81,6 +81,7 @@ ExploreSession::~ExploreSession() {
     {
         std::lock_guard lock(mutex_);
         stop_ = true;
+        overtaken_ = true;
     }
     changed_.notify_all();
     thread_.join();
@@ -170,6 +171,7 @@ std::string ExploreSession::set_scene_text(const std::string& text) {
     pending_.camera.reset();
     pending_.scene = std::move(scene);
     dirty_ = true;
+    overtaken_ = true;
     changed_.notify_all();
     return "";
 }
@@ -185,6 +187,7 @@ std::string ExploreSession::set_camera_text(const std::string& text) {
     camera_ = camera;
     pending_.camera = camera;
     dirty_ = true;
+    overtaken_ = true;
     changed_.notify_all();
     return "";
 }
@@ -208,6 +211,7 @@ std::string ExploreSession::set_options(const std::vector<std::string>& args) {
     pending_.invocation = inv;
     pending_.options = true;
     dirty_ = true;
+    overtaken_ = true;
     changed_.notify_all();
     return "";
 }
@@ -292,6 +296,7 @@ void ExploreSession::loop() {
                 taken = std::move(pending_);
                 pending_ = Settings{};
                 dirty_ = false;
+                overtaken_ = false;
                 changed = true;
             }
         }
@@ -319,8 +324,11 @@ void ExploreSession::loop() {
             // After a change, a pass too slow to follow the mouse is first made at a half or
             // a quarter of the size (sample 0 only), then refined at full size.
             const int shrink = !fresh || full_pass_ms <= kQuickPassMs ? 1 : full_pass_ms <= 4 * kQuickPassMs ? 2 : 4;
-            fresh = false;
             RenderOptions pass = o;
+            // A pass that refines is dropped for a change; the first after a change is not:
+            // while the mouse moves faster than passes finish, each shows a frame.
+            pass.cancel = fresh ? nullptr : &overtaken_;
+            fresh = false;
             pass.first_sample = shrink > 1 ? 0 : samples;
             // Each pass its own random numbers (a pixel's streams run in order, so pass k cannot
             // take sample k's numbers of one render): still the same for the same --seed.
@@ -330,6 +338,7 @@ void ExploreSession::loop() {
             std::shared_lock read(scene_mutex_);
             const RenderResult r = render(*scene_, pass);
             read.unlock();
+            if (pass.cancel && overtaken_) continue;  // part of an image of a view that has gone
             frame->width = pass.width;
             frame->height = pass.height;
             frame->render_ms = r.seconds * 1000;

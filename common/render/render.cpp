@@ -126,6 +126,7 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
     std::mutex counters_mutex;
 
     auto render_tile = [&](int tile) {
+        if (o.cancel && o.cancel->load(std::memory_order_relaxed)) return;
         RayCounters counters;
         traversal_tally = {};  // a tile runs on one thread: what the searches count is this tile's
         const int x0 = (tile % tiles_x) * kTile, y0 = (tile / tiles_x) * kTile;

@@ -4,6 +4,7 @@
 #include "render/scene.hpp"
 #include "render/strata.hpp"
 
+#include <atomic>
 #include <cstdint>
 #include <optional>
 
@@ -23,6 +24,9 @@ struct RenderOptions {
     // the same image as a whole render only from sample 0 (the explorer seeds each pass apart).
     int first_sample = 0;
     int sample_count = 0;
+    // When set (by another thread), the tiles not yet started are skipped: the explorer's
+    // pass, overtaken by a camera move, ends early and its image is thrown away.
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 struct RenderResult {
