@@ -195,7 +195,7 @@ try:
         driver.get(url)
         wait_for(driver, "const f = window.rtlab.frame; return f && f.width === 640 && f.samples === f.target", 120)
         canvas = driver.find_element(By.ID, "frame")
-        ActionChains(driver).move_to_element_with_offset(canvas, -170, -40).click().perform()
+        ActionChains(driver).move_to_element_with_offset(canvas, 120, -60).click().perform()
         wait_for(driver, "return window.rtlab.pick")
         time.sleep(0.5)
         driver.save_screenshot(str(screenshot))

@@ -342,8 +342,6 @@ async function loadState(resetCamera) {
   fillSelect('filter', state.choices.filter, o.filter);
   fillSelect('lens', state.choices.lens, 'square');
   for (const k of ['depth', 'spp', 'seed', 'threads', 'width', 'height']) $(k).value = o[k];
-  fillSelect('scene-name', state.scenes.map((s) => s.name), state.scene);
-  $('scene-name').disabled = true;  // one scene per session: ./lab explore NN SCENE
   if (resetCamera || !cam) {
     cam = structuredClone(state.camera);
     home = structuredClone(state.camera);
