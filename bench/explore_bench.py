@@ -205,10 +205,10 @@ try:
 finally:
     driver.quit()
 
-print("640x360, 2 render threads, frames counted as drawn by headless chromium (bench/explore_bench.py);")
-print("frames travel as raw RGBA (see the formats below). Load average while measuring in the last column:")
-print("the machine was shared when these were taken. Targets: moving >= 30 fps with normal shading and >= 15")
-print("with whitted; a move's first frame <= 50 ms; a click's ray tree <= 100 ms.")
+print("640x360, 2 render threads; frames counted as headless chromium drew them;")
+print("frames sent as raw RGBA (the formats: last table). The machine was shared:")
+print("its load average while measuring is the last column. Targets: moving >= 30 fps")
+print("(normal) and >= 15 (whitted); move <= 50 ms; click <= 100 ms.")
 print()
 print(f"{'scene':24} {'moving':>7} {'(full)':>7} {'refine':>7} {'Mrays/s':>8} {'move ms':>13} {'click ms':>13} {'load':>5}")
 print(f"{'':24} {'fps':>7} {'fps':>7} {'fps':>7} {'':>8} {'median/worst':>13} {'median/worst':>13} {'':>5}")
