@@ -201,6 +201,12 @@ try:
         status, headers, _ = request(f"/api/frame?after={headers['X-Frame-Id']}&wait=2000")
     check(int(headers["X-Generation"]) > generation, "a good scene renders")
 
+    # A click right after a move sees the moved camera.
+    eye = [-1.0, 1.5, 3.0]
+    request("/api/camera", json.dumps({"eye": eye, "target": [2, 1, -0.4], "fov": 50}), "POST")
+    status, _, body = request("/api/pick?x=10&y=10")
+    check(status == 200 and json.loads(body)["ray"]["origin"] == eye, f"a pick after a move starts at the new eye: {body[:120]!r}")
+
     # A connection that sends nothing holds one worker, not the server.
     idle = socket.create_connection(("127.0.0.1", port))
     idle.sendall(b"GET /api/state HTTP/1.1\r\n")  # and never the rest

@@ -171,6 +171,7 @@ std::string ExploreSession::set_scene_text(const std::string& text) {
     pending_.camera.reset();
     pending_.scene = std::move(scene);
     dirty_ = true;
+    ++changes_;
     overtaken_ = true;
     changed_.notify_all();
     return "";
@@ -187,6 +188,7 @@ std::string ExploreSession::set_camera_text(const std::string& text) {
     camera_ = camera;
     pending_.camera = camera;
     dirty_ = true;
+    ++changes_;
     overtaken_ = true;
     changed_.notify_all();
     return "";
@@ -211,6 +213,7 @@ std::string ExploreSession::set_options(const std::vector<std::string>& args) {
     pending_.invocation = inv;
     pending_.options = true;
     dirty_ = true;
+    ++changes_;
     overtaken_ = true;
     changed_.notify_all();
     return "";
@@ -224,6 +227,13 @@ std::shared_ptr<const ExploreFrame> ExploreSession::frame_after(std::uint64_t af
 }
 
 json ExploreSession::pick(int x, int y, bool svg) {
+    {
+        // A click sees the camera of the last move: wait until the render thread has taken
+        // the changes made so far (it drops a refining pass for them).
+        std::unique_lock wait(mutex_);
+        const std::uint64_t made = changes_;
+        framed_.wait_for(wait, std::chrono::seconds(10), [&] { return applied_ >= made || stop_; });
+    }
     std::shared_lock lock(scene_mutex_);
     if (!scene_) return json{{"error", "the scene is not loaded yet"}};
     try {
@@ -288,6 +298,7 @@ void ExploreSession::loop() {
     for (;;) {
         Settings taken;
         bool changed = false;
+        std::uint64_t taking = 0;
         {
             std::unique_lock lock(mutex_);
             changed_.wait(lock, [&] { return stop_ || dirty_ || (ready && samples < o.spp); });
@@ -298,11 +309,17 @@ void ExploreSession::loop() {
                 dirty_ = false;
                 overtaken_ = false;
                 changed = true;
+                taking = changes_;
             }
         }
         if (changed) {
             std::unique_lock write(scene_mutex_);
             apply(taken);
+            {
+                std::lock_guard lock(mutex_);
+                applied_ = taking;
+            }
+            framed_.notify_all();  // a pick waiting for these changes
             ++generation;
             try {
                 o = options_for(*scene_, render_invocation_);

@@ -74,7 +74,8 @@ private:
     mutable std::condition_variable framed_;   // frame_after waits on it
     Settings pending_;
     bool dirty_ = false, stop_ = false;
-    std::atomic<bool> overtaken_{false};  // a change is waiting: the pass under way stops early
+    std::uint64_t changes_ = 0, applied_ = 0;  // changes made, and taken into the scene
+    std::atomic<bool> overtaken_{false};       // a change is waiting: the pass under way stops early
     std::shared_ptr<const ExploreFrame> frame_;
     std::string render_error_;
     ChapterApp::Invocation invocation_;  // as last set (the render thread's may lag a pass)
