@@ -131,6 +131,9 @@ try:
         noise, ours = mean_difference(cli0, cli1), mean_difference(rgb, cli0)
         check(ours <= 1.5 * noise + 0.5, f"the converged frame is ch07's render but for noise ({ours:.2f}, ch07 against itself {noise:.2f})")
         check(all(frame[4 * i + 3] == 255 for i in range(W * H)), "alpha is opaque")
+    status, headers, _ = request("/api/frame?after=0")
+    check(float(headers["X-Nodes-Per-Ray"]) > 0 and float(headers["X-Primitives-Per-Ray"]) > 0,
+          f"a frame says what the search cost per ray: {headers['X-Nodes-Per-Ray']}, {headers['X-Primitives-Per-Ray']}")
     for fmt, magic in (("png", b"\x89PNG"), ("jpeg", b"\xff\xd8")):
         status, headers, body = request(f"/api/frame?after=0&format={fmt}")
         check(status == 200 and body.startswith(magic) and headers["Content-Type"].startswith("image/"),

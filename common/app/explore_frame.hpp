@@ -10,13 +10,16 @@
 namespace rt {
 
 struct ExploreFrame {
-    std::uint64_t id = 0;            // counts every frame the session made
-    std::uint64_t generation = 0;    // counts the changes of scene, camera or settings
-    int width = 0, height = 0;       // of this frame: smaller than the view while it moves
-    int samples = 0;                 // samples per pixel so far
-    int target_samples = 0;          // where refining stops
-    double render_ms = 0;            // of the pass that made it
-    double mrays_per_s = 0;          // rays of that pass (every kind) over its time
+    std::uint64_t id = 0;          // counts every frame the session made
+    std::uint64_t generation = 0;  // counts the changes of scene, camera or settings
+    int width = 0, height = 0;     // of this frame: smaller than the view while it moves
+    int samples = 0;               // samples per pixel so far
+    int target_samples = 0;        // where refining stops
+    double render_ms = 0;          // of the pass that made it
+    double mrays_per_s = 0;        // rays of that pass (every kind) over its time
+    // What the search cost that pass, per ray (book §10.6): boxes (nodes) visited and
+    // primitives tested.
+    double nodes_per_ray = 0, primitives_per_ray = 0;
     std::vector<std::uint8_t> rgba;  // sRGB, 8 bits, top row first
 };
 

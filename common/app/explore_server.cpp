@@ -148,6 +148,8 @@ int explore(const ChapterApp& app, const ChapterApp::Invocation& inv) {
         header("X-Render-Ms", frame->render_ms);
         header("X-Encode-Ms", encode_ms);
         header("X-Mrays", frame->mrays_per_s);
+        header("X-Nodes-Per-Ray", frame->nodes_per_ray);
+        header("X-Primitives-Per-Ray", frame->primitives_per_ray);
         res.set_header("Cache-Control", "no-store");
         res.set_content(std::move(bytes), mime_type(format));
     });

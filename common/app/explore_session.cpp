@@ -359,7 +359,10 @@ void ExploreSession::loop() {
             frame->width = pass.width;
             frame->height = pass.height;
             frame->render_ms = r.seconds * 1000;
-            frame->mrays_per_s = r.seconds > 0 ? double(r.counters.total()) / r.seconds / 1e6 : 0;
+            const double rays = double(r.counters.total());
+            frame->mrays_per_s = r.seconds > 0 ? rays / r.seconds / 1e6 : 0;
+            frame->nodes_per_ray = rays > 0 ? double(r.counters.nodes_visited) / rays : 0;
+            frame->primitives_per_ray = rays > 0 ? double(r.counters.primitives_tested) / rays : 0;
             if (shrink > 1) {
                 to_rgba(r.image, frame->rgba);
             } else {

@@ -83,6 +83,7 @@ async function frameLoop() {
         id: h('X-Frame-Id'), generation: h('X-Generation'), width: h('X-Width'), height: h('X-Height'),
         samples: h('X-Samples'), target: h('X-Target-Samples'), renderMs: h('X-Render-Ms'),
         encodeMs: h('X-Encode-Ms'), mrays: h('X-Mrays'), bytes: buffer.byteLength,
+        nodes: h('X-Nodes-Per-Ray'), primitives: h('X-Primitives-Per-Ray'),
         transferMs: received - headersAt, waitedMs: headersAt - asked,
       };
       if (f.id <= after) continue;
@@ -104,7 +105,8 @@ async function frameLoop() {
       shown.push(drawn);
       while (shown.length && shown[0] < drawn - 1000) shown.shift();
       $('fps').textContent = `${shown.length} fps`;
-      $('mrays').textContent = `${f.mrays.toFixed(1)} Mrays/s`;
+      $('mrays').textContent = `${f.mrays.toFixed(1)} Mrays/s · ${f.nodes.toFixed(1)} boxes, ` +
+        `${f.primitives.toFixed(1)} primitives per ray`;
       $('samples').textContent = f.width < frameCanvas.width
         ? `preview ${f.width}×${f.height}` : `${f.samples}/${f.target} spp`;
       $('timing').textContent = `render ${f.renderMs.toFixed(1)} · encode ${f.encodeMs.toFixed(1)} · ` +
