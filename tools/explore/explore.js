@@ -72,7 +72,7 @@ async function frameLoop() {
       const asked = performance.now();
       const r = await fetch(`/api/frame?after=${after}&format=${format}&wait=1000`);
       const renderError = r.headers.get('X-Render-Error');
-      $('error').textContent = renderError ? `render: ${renderError}` : '';
+      $('render-error').textContent = renderError ? `render: ${renderError}` : '';
       if (r.status === 204) continue;
       if (!r.ok) throw new Error((await r.json()).error);
       const h = (k) => Number(r.headers.get(k));
@@ -112,7 +112,7 @@ async function frameLoop() {
       $('timing').textContent = `render ${f.renderMs.toFixed(1)} · encode ${f.encodeMs.toFixed(1)} · ` +
         `transfer ${f.transferMs.toFixed(1)} · draw ${f.drawMs.toFixed(1)} ms`;
     } catch (e) {
-      $('error').textContent = `frames: ${e.message}`;
+      $('render-error').textContent = `frames: ${e.message}`;
       await new Promise((done) => setTimeout(done, 500));
     }
   }
