@@ -110,13 +110,15 @@ try:
     # The controls: an option the parser refuses shows its line; a shading goes into the file.
     from selenium.webdriver.support.ui import Select
     Select(driver.find_element(By.ID, "pattern")).select_by_value("jittered")
-    spp = driver.find_element(By.ID, "spp")
-    spp.clear()
-    spp.send_keys("3\t")
+    def set_field(key, value):  # as typed, then left: one change event
+        driver.execute_script("const e = document.getElementById(arguments[0]); e.value = arguments[1];"
+                              "e.dispatchEvent(new Event('change'))", key, value)
+
+    set_field("spp", "3")
     refused = wait_for(driver, "const e = document.getElementById('error').textContent; return e.includes('n x n') && e", 30)
     check(refused, f"--spp 3 with the jittered pattern is refused in the page: {refused!r}")
-    spp.clear()
-    spp.send_keys("4\t")
+    set_field("spp", "4")
+    check(wait_for(driver, "return document.getElementById('error').textContent === ''", 30), "--spp 4 is taken")
     generation = driver.execute_script("return window.rtlab.generation")
     Select(driver.find_element(By.ID, "shading")).select_by_value("cost")
     check(wait_for(driver, f"return window.rtlab.generation > {generation}", 60), "a shading change renders")

@@ -37,6 +37,9 @@ async function getJson(url, options) {
   if (!r.ok) throw new Error(j.error || `HTTP ${r.status}`);
   return j;
 }
+// A scene file as the lab writes them: one key a line, arrays of numbers on one line.
+const pretty = (value) => JSON.stringify(value, null, 1)
+  .replace(/\[\s+([^\[\]{}]*?)\s+\]/g, (_, inner) => `[${inner.split(/,\s+/).join(', ')}]`);
 const post = (url, body) => getJson(url, {method: 'POST', body: typeof body === 'string' ? body : JSON.stringify(body)});
 
 // ---- the frames: long polling, drawn as they come ----
@@ -298,7 +301,7 @@ async function sceneControlChanged() {
   const offset = {method: $('offset').value};
   if ($('epsilon').value !== '') offset.epsilon = Number($('epsilon').value);
   scene.offset = offset;
-  const text = JSON.stringify(scene, null, 1);
+  const text = pretty(scene);
   if (await sendScene(text)) {
     sceneObject = scene;
     $('text').value = text;
@@ -308,8 +311,7 @@ async function sceneControlChanged() {
 for (const id of ['shading', 'offset', 'epsilon']) $(id).addEventListener('change', sceneControlChanged);
 
 $('copy').addEventListener('click', async () => {
-  const text = sceneObject ? JSON.stringify({...sceneObject, camera: cam}, null, 1)
-    : JSON.stringify({camera: cam}, null, 1);
+  const text = pretty(sceneObject ? {...sceneObject, camera: cam} : {camera: cam});
   try {
     await navigator.clipboard.writeText(text);
     $('error').textContent = 'copied';
