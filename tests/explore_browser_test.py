@@ -20,6 +20,7 @@ from selenium.webdriver.chrome.options import Options
 from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
+from selenium.webdriver.support.ui import Select
 
 sys.path.insert(0, str(pathlib.Path(__file__).parent))
 from checks import check, finish  # noqa: E402
@@ -108,7 +109,6 @@ try:
     check(camera["eye"] != [-1.4, 1.7, 3.4], f"the server's camera moved: {camera['eye']}")
 
     # The controls: an option the parser refuses shows its line; a shading goes into the file.
-    from selenium.webdriver.support.ui import Select
     Select(driver.find_element(By.ID, "pattern")).select_by_value("jittered")
     def set_field(key, value):  # as typed, then left: one change event
         driver.execute_script("const e = document.getElementById(arguments[0]); e.value = arguments[1];"

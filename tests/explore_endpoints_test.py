@@ -11,7 +11,6 @@ message, as the command line prints it, and renders nothing; many requests at on
 connection that sends nothing, neither crash nor stall it; a taken port is refused.
 """
 import json
-import math
 import pathlib
 import socket
 import struct
