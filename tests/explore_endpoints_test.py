@@ -203,6 +203,14 @@ try:
         status, headers, _ = request(f"/api/frame?after={headers['X-Frame-Id']}&wait=2000")
     check(int(headers["X-Generation"]) > generation, "a good scene renders")
 
+    # --depth overrides the file's max_depth while it is given, through a new scene too.
+    request("/api/options", json.dumps(json.loads(OPTIONS) + ["--depth", "3"]), "POST")
+    request("/api/scene", SCENE.read_text(), "POST")
+    depth = json.loads(request("/api/state")[2])["options"]["depth"]
+    request("/api/options", OPTIONS, "POST")
+    check((depth, json.loads(request("/api/state")[2])["options"]["depth"]) == (3, 8),
+          f"--depth 3 overrides max_depth 8, and without it the file's is back: {depth}")
+
     # A click right after a move sees the moved camera.
     eye = [-1.0, 1.5, 3.0]
     request("/api/camera", json.dumps({"eye": eye, "target": [2, 1, -0.4], "fov": 50}), "POST")

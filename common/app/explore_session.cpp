@@ -157,7 +157,6 @@ std::string ExploreSession::set_scene_text(const std::string& text) {
         *scene = load_scene_text(text, filename, base_dir_);
         scene->name = scene_name_;
         (void)options_for(*scene, inv);
-        if (inv.max_depth) scene->max_depth = *inv.max_depth;
     } catch (const std::exception& e) {  // SceneError, or a limit (std::invalid_argument)
         return one_line(e.what());
     }
