@@ -5,6 +5,7 @@
 #include "render/render.hpp"
 #include "support.hpp"
 
+#include <atomic>
 #include <cmath>
 #include <limits>
 #include <memory>
@@ -91,5 +92,41 @@ TEST_CASE("the average of identical samples is that sample, at the most samples 
         CHECK(c.g == 0.7f);
         CHECK(c.b == 0.85f);
     }
+}
+
+TEST_CASE("progressive passes: a pass takes its samples' strata, and a cancelled pass does no work") {
+    // The explorer renders one sample per pass (RenderOptions::first_sample): with the
+    // regular pattern no random number places a sample, so the passes' mean is the render.
+    Scene scene = look_at(Vec3(0, 0, 5), Vec3(0), 40, std::make_shared<RayDirectionIntegrator>());
+    RenderOptions o;
+    o.width = 5;
+    o.height = 3;
+    o.spp = 4;
+    o.antialiasing.pattern = PixelPattern::regular;
+    const RenderResult whole = render(scene, o);
+    std::vector<glm::dvec3> sum(whole.image.pixels.size(), glm::dvec3(0));
+    for (int k = 0; k < o.spp; ++k) {
+        RenderOptions pass = o;
+        pass.first_sample = k;
+        pass.sample_count = 1;
+        const RenderResult r = render(scene, pass);
+        CHECK(r.counters.total() == std::uint64_t(o.width * o.height));  // one camera ray a pixel
+        for (std::size_t i = 0; i < sum.size(); ++i) sum[i] += glm::dvec3(r.image.pixels[i]);
+        if (k == 0) CHECK(r.image.pixels[0] != whole.image.pixels[0]);  // one stratum is not four
+    }
+    for (std::size_t i = 0; i < sum.size(); ++i)
+        for (int c = 0; c < 3; ++c) CHECK(sum[i][c] / o.spp == doctest::Approx(whole.image.pixels[i][c]).epsilon(1e-6));
+
+    RenderOptions bad = o;
+    bad.first_sample = 3;
+    bad.sample_count = 2;
+    CHECK_THROWS_WITH_AS(render(scene, bad), "samples 3+2 are not samples of a 4-sample pixel", std::invalid_argument);
+
+    std::atomic<bool> cancel{true};
+    RenderOptions cancelled = o;
+    cancelled.cancel = &cancel;
+    const RenderResult none = render(scene, cancelled);
+    CHECK(none.counters.total() == 0);
+    CHECK(none.image.pixels[0] == Color(0));
 }
 }  // TEST_SUITE("common")

@@ -1,5 +1,7 @@
 #include "app/app.hpp"
 
+#include "app/explore.hpp"
+#include "app/pick_json.hpp"
 #include "app/ray_tree_svg.hpp"
 #include "core/build_info.hpp"
 #include "core/exercise.hpp"
@@ -19,90 +21,6 @@ namespace rt {
 namespace {
 
 using nlohmann::json;
-
-// Names come from file names, which need not be UTF-8: such bytes print as U+FFFD rather
-// than make the dump throw.
-std::string dump(const json& j) {
-    return j.dump(-1, ' ', false, json::error_handler_t::replace);
-}
-
-json to_json(const Vec3& v) {
-    return json::array({v.x, v.y, v.z});
-}
-
-// Colours are float whatever Real is (and then the same type as Vec3): their own name.
-json color_json(const Color& c) {
-    return json::array({c.r, c.g, c.b});
-}
-
-json hit_json(const Scene& scene, const HitRecord& h) {
-    json j{{"surface", h.surface < scene.surfaces.size() ? scene.surfaces.name(h.surface) : ""},
-           {"t", h.t},
-           {"point", to_json(h.p)},
-           {"normal", to_json(h.normal)}};
-    if (h.shading_normal != h.normal) j["shading_normal"] = to_json(h.shading_normal);
-    if (h.primitive != kNone) j["triangle"] = h.primitive;
-    if (h.part != kNone && h.surface < scene.surfaces.size())  // which operand of a CSG object
-        j["operand"] = describe_part(scene.surfaces[h.surface].shape, h.part);
-    return j;
-}
-
-// One ray of the tree and, nested, the rays it cast. JSON has no infinity: an interval
-// that is open-ended ends in null.
-json node_json(const Scene& scene, const RayTree& tree, const std::vector<std::vector<int>>& children, int i) {
-    const RayNode& n = tree.nodes[std::size_t(i)];
-    const auto end = [](Real v) { return std::isfinite(v) ? json(v) : json(nullptr); };
-    json j{{"kind", kRayKindNames[n.kind]},
-           {"depth", n.depth},
-           {"origin", to_json(n.ray.origin)},
-           {"direction", to_json(n.ray.direction)},
-           {"interval", json::array({end(n.interval.min), end(n.interval.max)})}};
-    if (n.kind == RayKind::shadow) {
-        j["light"] = n.light;
-        j["blocked"] = n.hit;
-        if (n.hit && n.record.surface != kNone) j["blocker"] = hit_json(scene, n.record);
-    } else {
-        j["hit"] = n.hit ? hit_json(scene, n.record) : json(nullptr);
-    }
-    if (*n.weight_of) j["weight"] = {{"of", n.weight_of}, {"value", color_json(n.weight)}};
-    j["radiance"] = color_json(n.radiance);
-    if (*n.weight_of && n.kind != RayKind::shadow) j["contributes"] = color_json(n.weight * n.radiance);
-    if (*n.note) j["note"] = n.note;
-    json kids = json::array();
-    for (int c : children[std::size_t(i)]) kids.push_back(node_json(scene, tree, children, c));
-    if (!kids.empty()) j["children"] = kids;
-    return j;
-}
-
-json pick_json(const SceneEntry& entry, const Scene& scene, int x, int y, const Pick& p) {
-    json j{{"scene", entry.name},
-           {"pixel", {x, y}},
-           {"ray", {{"origin", to_json(p.ray.origin)}, {"direction", to_json(p.ray.direction)}}},
-           {"hit", p.hit.has_value()}};
-    if (p.hit) {
-        const HitRecord& h = *p.hit;
-        j.update(hit_json(scene, h));  // the same keys as the tree's hits, at the top level
-        if (h.has_barycentrics) {
-            j["beta"] = h.beta;
-            j["gamma"] = h.gamma;
-        }
-    }
-    j["color"] = color_json(p.color);
-    if (!p.tree.nodes.empty()) {
-        std::vector<std::vector<int>> children(p.tree.nodes.size());
-        int root = -1;
-        for (std::size_t i = 0; i < p.tree.nodes.size(); ++i) {
-            const int parent = p.tree.nodes[i].parent;
-            if (parent < 0) {
-                if (root < 0) root = int(i);
-            } else {
-                children[std::size_t(parent)].push_back(int(i));
-            }
-        }
-        j["tree"] = node_json(scene, p.tree, children, root);
-    }
-    return j;
-}
 
 json accel_json(const Scene& scene) {
     if (!scene.accel) return nullptr;
@@ -168,7 +86,7 @@ json stats_json(const std::string& chapter, const SceneEntry& entry, const Scene
 
 }  // namespace
 
-std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocation& inv) const {
+std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocation& inv, std::string* message) const {
     CLI::App cli{id_ + ": " + title_, id_};
     RenderOptions& o = inv.options;
     std::string scene_name = scenes_.empty() ? "" : scenes_.front().name;
@@ -241,12 +159,23 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
                    "how samples are weighed: " + kFilterNames.list() + " (default: the scene's)")
         ->check(one_of(kFilterNames));
     cli.add_flag("--stats", inv.stats, "print render statistics as one JSON line");
+    cli.add_flag("--explore", inv.explore,
+                 "serve the lab explorer on 127.0.0.1 and print its address: a progressive render of the scene "
+                 "in a browser page, its camera moved by the mouse, any pixel's ray tree on a click (default size "
+                 "640x360)");
+    cli.add_option("--port", inv.port, "with --explore: the port to serve on (0: any free one)")
+        ->check(whole)
+        ->check(CLI::Range(0, 65535))
+        ->capture_default_str();
     cli.set_version_flag("--version", std::string(id_ + " (rtlab " + build_info::version + ", Real=" + real_name() +
                                                   ", " + build_info::track + " track, exercises from solutions/: " +
                                                   build_info::from_solutions + ")"));
 
-    const auto usage = [&](const std::string& message) {
-        std::fprintf(stderr, "%s: error: %s\n", id_.c_str(), one_line(message).c_str());
+    const auto usage = [&](const std::string& what) {
+        if (message)
+            *message = one_line(what);
+        else
+            std::fprintf(stderr, "%s: error: %s\n", id_.c_str(), one_line(what).c_str());
         return 2;
     };
     try {
@@ -269,11 +198,19 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
         std::string stem = scene_name.substr(scene_name.find_last_of('/') + 1);
         stem = stem.substr(0, stem.size() - 5);
         inv.scene = {stem, "scene file " + scene_name,
-                     [path = scene_name](SceneSummary& summary) { return load_scene_file(path, &summary); }};
+                     [path = scene_name](SceneSummary& summary) { return load_scene_file(path, &summary); },
+                     scene_name};
     } else {
         return usage("--scene: unknown scene '" + scene_name + "' (see --list-scenes, or give a FILE.json)");
     }
     inv.spp_given = cli.count("--spp") > 0;
+    if (cli.count("--port") && !inv.explore) return usage("--port: serves the explorer, so it needs --explore");
+    if (inv.explore) {  // the explorer's own default size: 16:9, quick enough to move
+        if (!cli.count("--width")) o.width = 640;
+        if (!cli.count("--height")) o.height = 360;
+        if (!inv.pick.empty() || cli.count("--output") || inv.stats)
+            return usage("--explore: serves a page; --pick, --output and --stats are for a single render");
+    }
     if (!inv.pattern.empty()) o.antialiasing.pattern = *kPatternNames.find(inv.pattern);
     if (cli.count("--output") && inv.output.empty()) return usage("--output: must not be empty");
     if (cli.count("--svg")) {
@@ -293,6 +230,7 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
 }
 
 int ChapterApp::execute(const Invocation& inv) const {
+    if (inv.explore) return explore(*this, inv);
     try {
         SceneSummary summary;
         Scene scene = inv.scene.build(summary);
@@ -301,7 +239,7 @@ int ChapterApp::execute(const Invocation& inv) const {
         scene.build_accel(inv.accel.empty() ? scene.accel_kind : *kAccelNames.find(inv.accel));
         if (!inv.pick.empty()) {
             const Pick p = pick(scene, inv.options, inv.pick[0], inv.pick[1]);
-            const std::string text = dump(pick_json(inv.scene, scene, inv.pick[0], inv.pick[1], p));
+            const std::string text = dump(pick_json(inv.scene.name, scene, inv.pick[0], inv.pick[1], p));
             if (!inv.svg.empty() && p.tree.nodes.empty())
                 throw std::invalid_argument("--svg: scene '" + inv.scene.name +
                                             "' is shaded without a ray tree; use \"shading\": \"whitted\"");

@@ -17,6 +17,7 @@ struct SceneEntry {
     std::string name;
     std::string description;
     std::function<Scene(SceneSummary&)> build;
+    std::string file;  // the scene file it loads, or empty for a scene made in code
 };
 
 class ChapterApp {
@@ -25,7 +26,7 @@ public:
 
     void add_scene(std::string name, std::string description, std::function<Scene()> build) {
         scenes_.push_back(
-            {std::move(name), std::move(description), [b = std::move(build)](SceneSummary&) { return b(); }});
+            {std::move(name), std::move(description), [b = std::move(build)](SceneSummary&) { return b(); }, ""});
     }
     // Scenes kept as files NAME.json in the chapter's folder `chapter_dir`/scenes/.
     void add_scene_files(const std::string& chapter_dir, std::initializer_list<const char*> names) {
@@ -34,7 +35,7 @@ public:
     // A scene kept as a JSON file beside the chapter (see chapters/*/scenes/).
     void add_scene_file(std::string name, std::string path) {
         scenes_.push_back({std::move(name), "scene file " + path,
-                           [path](SceneSummary& summary) { return load_scene_file(path, &summary); }});
+                           [path](SceneSummary& summary) { return load_scene_file(path, &summary); }, path});
     }
 
     // --scene takes a registered name or any FILE.json. Exit codes: 0 done, 1 the render
@@ -55,12 +56,21 @@ public:
         std::string pattern, filter;   // --pattern, --filter: override the scene's antialiasing
         bool spp_given = false;        // --spp overrides the scene's samples
         bool stats = false;
+        bool explore = false;  // --explore: serve the explorer (common/app/explore.hpp) instead
+        int port = 0;          // --port: its port on 127.0.0.1 (0: any free one)
     };
     // Parses and checks a command line without touching any file: the exit code to end with
     // (--help, --version, --list-scenes, or 2 after one line on stderr), or nothing when
     // `invocation` is ready for execute().
-    std::optional<int> parse(int argc, const char* const* argv, Invocation& invocation) const;
+    // With `message`, that line goes there instead (the explorer's settings are command-line
+    // options: one reader checks both).
+    std::optional<int> parse(int argc, const char* const* argv, Invocation& invocation,
+                             std::string* message = nullptr) const;
     int execute(const Invocation& invocation) const;
+
+    const std::string& id() const { return id_; }
+    const std::string& title() const { return title_; }
+    const std::vector<SceneEntry>& scenes() const { return scenes_; }
 
 private:
     std::string id_;

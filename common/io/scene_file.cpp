@@ -234,6 +234,12 @@ json parse(const std::string& text, const std::string& filename) {
 
 }  // namespace
 
+Camera load_camera_text(const std::string& text, const std::string& filename) {
+    const json doc = parse(text, filename);
+    const JsonReader reader(text, filename, ".");
+    return read_camera(Fields(reader, doc, ""));
+}
+
 Scene load_scene_text(const std::string& text, const std::string& filename, const std::string& base_dir,
                       SceneSummary* summary_out) {
     const json doc = parse(text, filename);

@@ -29,5 +29,8 @@ struct SceneSummary {
 Scene load_scene_file(const std::string& path, SceneSummary* summary = nullptr);
 Scene load_scene_text(const std::string& text, const std::string& filename, const std::string& base_dir,
                       SceneSummary* summary = nullptr);
+// A scene file's "camera" object on its own (the explorer's camera moves), read as the
+// loader reads it. Throws SceneError.
+Camera load_camera_text(const std::string& text, const std::string& filename);
 
 }  // namespace rt

@@ -114,6 +114,10 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
     const int tiles_x = (o.width + kTile - 1) / kTile;
     const int tiles_y = (o.height + kTile - 1) / kTile;
     const int tiles = tiles_x * tiles_y;
+    const int first = o.first_sample, count = o.sample_count > 0 ? o.sample_count : o.spp - first;
+    if (first < 0 || count < 1 || first + count > o.spp)
+        throw std::invalid_argument("samples " + std::to_string(first) + "+" + std::to_string(count) +
+                                    " are not samples of a " + std::to_string(o.spp) + "-sample pixel");
 
     const Integrator& integrator = *scene.integrator;
     RenderResult result;
@@ -122,6 +126,7 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
     std::mutex counters_mutex;
 
     auto render_tile = [&](int tile) {
+        if (o.cancel && o.cancel->load(std::memory_order_relaxed)) return;
         RayCounters counters;
         traversal_tally = {};  // a tile runs on one thread: what the searches count is this tile's
         const int x0 = (tile % tiles_x) * kTile, y0 = (tile / tiles_x) * kTile;
@@ -135,7 +140,7 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
                 // step outgrows the samples); in double, n <= 2^16 floats add exactly, so the
                 // average of identical samples is that sample.
                 glm::dvec3 sum(0);
-                for (int k = 0; k < o.spp; ++k) {
+                for (int k = first; k < first + count; ++k) {
                     sampler.start_sample(k);
                     CameraSample cs = camera_sample(i, j, o.antialiasing.filter, sampler);
                     lens_and_time(view, moving, sampler, cs);
@@ -151,7 +156,7 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
                     else
                         ++counters.nonfinite_samples;
                 }
-                result.image.at(i, y) = Color(sum / double(o.spp));
+                result.image.at(i, y) = Color(sum / double(count));
                 for (std::size_t d = 0; d < kDimensions; ++d) counters.draws[d] += sampler.draws()[d];
             }
         }

@@ -4,6 +4,7 @@
 #include "render/scene.hpp"
 #include "render/strata.hpp"
 
+#include <atomic>
 #include <cstdint>
 #include <optional>
 
@@ -17,6 +18,15 @@ struct RenderOptions {
     std::uint64_t seed = 0;     // selects every pixel's random stream
     int threads = 0;            // 0 = all cores
     bool progress = false;      // progress bar on stderr
+    // A progressive pass (the explorer, common/app/explore*): only the samples [first_sample,
+    // first_sample + sample_count) of a pixel's spp (the pattern's strata, in order), averaged;
+    // 0 = all of them. Their random numbers start each pixel's streams afresh: a pass gives
+    // the same image as a whole render only from sample 0 (the explorer seeds each pass apart).
+    int first_sample = 0;
+    int sample_count = 0;
+    // When set (by another thread), the tiles not yet started are skipped: the explorer's
+    // pass, overtaken by a camera move, ends early and its image is thrown away.
+    const std::atomic<bool>* cancel = nullptr;
 };
 
 struct RenderResult {

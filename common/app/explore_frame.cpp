@@ -1,0 +1,98 @@
+#include "app/explore_frame.hpp"
+
+#include <stb_image_write.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <stdexcept>
+
+namespace rt {
+
+namespace {
+
+// linear_to_srgb per channel costs a pow(); a frame has 700,000 channels. A table of 4096
+// steps of the linear value is within one 8-bit step of it everywhere.
+constexpr int kSteps = 4096;
+const std::array<std::uint8_t, kSteps + 1>& srgb_table() {
+    static const auto table = [] {
+        std::array<std::uint8_t, kSteps + 1> t{};
+        for (int i = 0; i <= kSteps; ++i)
+            t[std::size_t(i)] = std::uint8_t(std::lround(255.0f * linear_to_srgb(float(i) / kSteps)));
+        return t;
+    }();
+    return table;
+}
+
+std::uint8_t encode(double linear) {
+    // NaN goes to 0 with the clamp's comparisons written this way round.
+    const double c = linear > 0 ? (linear < 1 ? linear : 1) : 0;
+    return srgb_table()[std::size_t(c * kSteps + 0.5)];
+}
+
+void append(void* context, void* data, int size) {
+    static_cast<std::string*>(context)->append(static_cast<const char*>(data), std::size_t(size));
+}
+
+}  // namespace
+
+void to_rgba(const Image& image, std::vector<std::uint8_t>& rgba) {
+    rgba.resize(image.pixels.size() * 4);
+    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+        for (int c = 0; c < 3; ++c) rgba[4 * i + std::size_t(c)] = encode(image.pixels[i][c]);
+        rgba[4 * i + 3] = 255;
+    }
+}
+
+void mean_to_rgba(const std::vector<double>& sum, int samples, std::vector<std::uint8_t>& rgba) {
+    const std::size_t pixels = sum.size() / 3;
+    const double scale = 1.0 / samples;
+    rgba.resize(pixels * 4);
+    for (std::size_t i = 0; i < pixels; ++i) {
+        for (std::size_t c = 0; c < 3; ++c) rgba[4 * i + c] = encode(sum[3 * i + c] * scale);
+        rgba[4 * i + 3] = 255;
+    }
+}
+
+bool frame_format(const std::string& name, FrameFormat& format) {
+    if (name == "rgba")
+        format = FrameFormat::rgba;
+    else if (name == "png")
+        format = FrameFormat::png;
+    else if (name == "jpeg")
+        format = FrameFormat::jpeg;
+    else
+        return false;
+    return true;
+}
+
+const char* mime_type(FrameFormat format) {
+    switch (format) {
+        case FrameFormat::png:
+            return "image/png";
+        case FrameFormat::jpeg:
+            return "image/jpeg";
+        default:
+            return "application/octet-stream";
+    }
+}
+
+std::string encode_frame(const ExploreFrame& f, FrameFormat format) {
+    std::string out;
+    bool ok = true;
+    switch (format) {
+        case FrameFormat::rgba:
+            out.assign(f.rgba.begin(), f.rgba.end());
+            break;
+        case FrameFormat::png:
+            ok = stbi_write_png_to_func(append, &out, f.width, f.height, 4, f.rgba.data(), f.width * 4) != 0;
+            break;
+        case FrameFormat::jpeg:
+            ok = stbi_write_jpg_to_func(append, &out, f.width, f.height, 4, f.rgba.data(), 90) != 0;
+            break;
+    }
+    if (!ok) throw std::runtime_error("cannot encode a frame");
+    return out;
+}
+
+}  // namespace rt

@@ -1,0 +1,37 @@
+#pragma once
+// The explorer's frames: what a progressive pass leaves for the page, and the three ways it
+// can travel (book §0, "The lab explorer": ./lab bench explore measures them).
+#include "render/image.hpp"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace rt {
+
+struct ExploreFrame {
+    std::uint64_t id = 0;          // counts every frame the session made
+    std::uint64_t generation = 0;  // counts the changes of scene, camera or settings
+    int width = 0, height = 0;     // of this frame: smaller than the view while it moves
+    int samples = 0;               // samples per pixel so far
+    int target_samples = 0;        // where refining stops
+    double render_ms = 0;          // of the pass that made it
+    double mrays_per_s = 0;        // rays of that pass (every kind) over its time
+    // What the search cost that pass, per ray (book §10.6): boxes (nodes) visited and
+    // primitives tested.
+    double nodes_per_ray = 0, primitives_per_ray = 0;
+    std::vector<std::uint8_t> rgba;  // sRGB, 8 bits, top row first
+};
+
+// Linear colours to 8-bit sRGB RGBA (alpha 255), clamped to [0, 1].
+void to_rgba(const Image& image, std::vector<std::uint8_t>& rgba);
+// The same from a running sum of `samples` passes (double, 3 per pixel).
+void mean_to_rgba(const std::vector<double>& sum, int samples, std::vector<std::uint8_t>& rgba);
+
+enum class FrameFormat { rgba, png, jpeg };
+// "rgba" (the bytes as they are), "png" or "jpeg" (quality 90); false for anything else.
+bool frame_format(const std::string& name, FrameFormat& format);
+const char* mime_type(FrameFormat format);
+std::string encode_frame(const ExploreFrame& frame, FrameFormat format);
+
+}  // namespace rt
