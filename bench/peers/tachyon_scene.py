@@ -55,8 +55,9 @@ def tachyon_scene(scene, width, height):
     half = math.tan(math.radians(cam["vfov"]) / 2)
     u, vv, w = camera_basis(cam)
     pixel = 2 * half / height  # one pixel at distance 1
-    # Half a pixel right and half a pixel down, in rtlab's (right-handed) frame.
-    d = [-wi + 0.5 * pixel * ui - 0.5 * pixel * vi for wi, ui, vi in zip(w, u, vv)]
+    # Half a pixel down and, as Tachyon's own right is the negated-z world's left, half a pixel
+    # left in rtlab's frame: measured, a sphere's centre then lands on the same pixel in both.
+    d = [-wi - 0.5 * pixel * ui - 0.5 * pixel * vi for wi, ui, vi in zip(w, u, vv)]
     lines = ["BEGIN_SCENE", f"RESOLUTION {width} {height}", "CAMERA",
              f"  ZOOM {0.5 / half:.9g}", "  ASPECTRATIO 1.0", "  ANTIALIASING 0",
              f"  RAYDEPTH {scene['depth'] + 1}",
