@@ -5,7 +5,10 @@ the scene is written with every z negated: the mirror image of a mirrored world 
 again. Its ZOOM sets the image plane's half-height to 0.5 / ZOOM at distance 1 (measured: the
 half-width follows the resolution's aspect), so ZOOM = 0.5 / tan(vfov / 2). Its rays go through
 pixel corners, not centres; the view direction is turned by half a pixel to make up for it.
-RAYDEPTH counts the camera ray, rtlab's max_depth does not: RAYDEPTH = depth + 1.
+RAYDEPTH counts the camera ray, rtlab's max_depth does not: RAYDEPTH = depth + 1 (checked: two
+facing mirrors show as many spheres in both). A mirror ray past the limit is not cast by rtlab
+(nothing added) but brings back the background in Tachyon: in a corridor of mirrors, Tachyon's
+deepest reflections are the background's colour where rtlab's are black.
 Shading: colour x (AMBIENT + DIFFUSE x sum of unshadowed lights' n.l) + PHONG highlights (Blinn's
 half vector, Tachyon's default) + SPECULAR x what the mirror direction sees: rtlab's Whitted terms
 with grey weights. Glass is refused: Tachyon has no refraction."""
