@@ -148,6 +148,22 @@ def main():
                         cells.append(f"{'-':>{8 if r == 'tachyon' else 7}} {'-':>5}")
             print(f"{name:<15} {threads:>3} | {' '.join(cells[0:3])} | {' '.join(cells[3:6])}")
 
+    # The sentences the book reads the table by (§10.10): every row a peer wins.
+    print()
+    for r in ("tachyon", "povray"):
+        lost = []
+        for name in scenes:
+            for threads in (1, 2):
+                if (name, threads, r) not in times:
+                    continue
+                for which, what in ((0, "render"), (1, "process")):
+                    ratio = statistics.median(times[(name, threads, r)][which]) / \
+                        statistics.median(times[(name, threads, "rtlab")][which])
+                    if ratio < 1:
+                        lost.append(f"{name} {what} on {threads} thread{'s' if threads > 1 else ''}"
+                                    f" (rtlab takes {1 / ratio:.2f}x {r}'s time)")
+        print(f"{r} is faster than rtlab on: " + ("; ".join(lost) if lost else "no row") + ".")
+
 
 if __name__ == "__main__":
     main()
