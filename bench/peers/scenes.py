@@ -1,4 +1,4 @@
-"""The neutral scenes of `./lab bench peers` (bench/peers/README.md): each is a plain dict that
+"""The neutral scenes of `./lab bench peers` (bench/peers/peers.py): each is a plain dict that
 rtlab_scene.py, tachyon_scene.py and povray_scene.py turn into each renderer's own file, so the
 three renderers are handed the same geometry, camera, lights and materials.
 
