@@ -1,4 +1,4 @@
-"""The ray and random-number counts chapters 2, 6, 17 and 18 quote from --stats and --pick
+"""The ray and random-number counts chapters 2, 5-9, 17 and 18 quote from --stats and --pick
 (./lab bench counts).
 
     python3 bench/ray_counts.py BIN_DIR OUT_DIR
@@ -7,6 +7,11 @@ Writes, into OUT_DIR (book/measured/):
 
   ch02-pick-middle.md    §2.5: what --pick prints for the middle pixel of a 201x151 image
   ch02-pick-default.md   §2.5: the t of --pick 200,150 at the default 400x300
+  ch05-skipping-*.md     §5.7: spheres and skipping, whole (dated), and the terms both evaluate
+  ch07-depth-*.md        §7.3: mirrors' rays at each --depth, and what they add up to
+  ch07-tinted-*.md       §7.7: tinted-sphere's --stats (dated), and its reflection rays
+  ch08-*.md              §8.7: glass-sphere's --stats (dated), its rays, glass-block's and tir's
+  ch09-instances-*.md    §9.5: instances' --stats (dated), and the bytes sharing saves
   ch06-shadows-stats.md  §6.7: what --stats prints for shadows, whole (it has a time: dated)
   ch06-shadow-rays.md    §6.7: what its counts add up to, and conic's and acne's
   ch17-grazing-stats.md  §17.3: the glossy reflections tried in grazing, and those lost
@@ -55,6 +60,10 @@ def n(x):
     return f"{x:,}"
 
 
+def tex(x):
+    return n(x).replace(",", "{,}")
+
+
 def write(out_dir, name, lines, stamp=None):
     """Exact counts need no date (stamp None); a time does."""
     with open(os.path.join(out_dir, name), "w") as f:
@@ -91,6 +100,106 @@ def ch02(bin_dir, out_dir):
     write(out_dir, "ch02-pick-default.md",
           [f"At the default 400×300 there is no middle pixel. `--pick 200,150` is the pixel just right of and "
            f"below the centre, and its $t$ is a little over 2 ({pick['t']:.8g})."])
+
+
+def transcript(command, line):
+    return ["```text", "$ build/release/bin/" + command, line, "```"]
+
+
+def ch05(bin_dir, out_dir, stamp):
+    ch05 = os.path.join(bin_dir, "ch05")
+    a, la = stats(ch05, "spheres")
+    b, lb = stats(ch05, "skipping")
+    need(a["shading"] == b["shading"], "skipping evaluates the terms spheres does")
+    need(b["scene_skipped"]["black_lights"] == 1 and b["scene_skipped"]["unused_materials"] == 2,
+         "skipping's black light and two unused materials are skipped")
+    with tempfile.TemporaryDirectory() as tmp:
+        images = []
+        for scene in ("spheres", "skipping"):
+            subprocess.run([ch05, "--scene", scene, "-o", os.path.join(tmp, scene + ".png")], check=True,
+                           capture_output=True)
+            with open(os.path.join(tmp, scene + ".png"), "rb") as f:
+                images.append(f.read())
+    need(images[0] == images[1], "spheres and skipping render the same image, byte for byte")
+    t = a["shading"]
+    need(t["specular_terms"] < t["light_terms"] / 2, "fewer than half the light terms need a highlight")
+    write(out_dir, "ch05-skipping-stats.md",
+          transcript("ch05 --scene spheres --stats -o /tmp/a.png", la)[:-1] +
+          ["$ build/release/bin/ch05 --scene skipping --stats -o /tmp/b.png", lb, "```"], stamp)
+    write(out_dir, "ch05-skipping-terms.md",
+          [f"Both evaluate {n(t['light_terms'])} light terms and {n(t['specular_terms'])} highlight terms, and the two "
+           "images are identical byte for byte."])
+
+
+def ch07(bin_dir, out_dir, stamp):
+    ch07 = os.path.join(bin_dir, "ch07")
+    rows, last = [], None
+    for depth in range(0, 13):
+        s, _ = stats(ch07, "mirrors", "--depth", str(depth))
+        need(s["rays"]["camera"] == 120000, "120,000 camera rays at every depth")
+        r = (s["rays"]["reflection"], s["rays"]["shadow"], s["rays"]["total"])
+        if last is not None:
+            need(r[0] >= last[0], "reflection rays never fall with the depth")
+        rows.append((depth, r))
+        if last == r:
+            break
+        last = r
+    need(rows[-1][1] == rows[-2][1], "a depth past which nothing changes")
+    final = rows[-2][0]  # the first depth of the unchanging counts
+    while final > 0 and rows[final - 1][1] == rows[final][1]:
+        final -= 1
+    one, two = rows[1][1][0], rows[2][1][0]
+    need(0.5 < one / 120000 < 0.6, "a little over half the camera rays hit a mirror")
+    need(0.4 < (two - one) / one < 0.6, "depth 2 adds about half as many again")
+    gains = [rows[k][1][0] - rows[k - 1][1][0] for k in range(2, final + 1)]
+    need(all(b < a for a, b in zip(gains, gains[1:])), "each later step adds fewer")
+    table = ["| `--depth` | reflection rays | shadow rays | total |", "|---|---|---|---|"]
+    for depth, (refl, shadow, total) in rows[:final + 1]:
+        if depth in (0, 1, 2, 4, 8) or depth == final:
+            label = f"{depth} and more" if depth == final else str(depth)
+            table.append(f"| {label} | {n(refl)} | {n(shadow)} | {n(total)} |")
+    write(out_dir, "ch07-depth-table.md", table)
+    write(out_dir, "ch07-depth-mirror.md",
+          [f"A little over half the camera rays ({n(one)}) hit a mirror. Depth 2 adds about half as many again, and "
+           "each later step adds fewer, because most reflected rays leave the mirrors. They hit the floor, the wall "
+           "or a ball, or fly out over the walls into the sky. Only the rays near the vanishing point go on "
+           f"bouncing. Depth {final} adds the last {n(rows[final][1][0] - rows[final - 1][1][0])} reflection rays. "
+           f"From there on nothing changes, because no ray in this scene is reflected more than {final} times."])
+    s, line = stats(ch07, "tinted-sphere")
+    need(s["rays"]["refraction"] == 0 and s["rays"]["total"] == sum(s["rays"][k] for k in
+                                                                    ("camera", "reflection", "shadow")),
+         "tinted-sphere: no refraction rays, the total the sum of the kinds")
+    write(out_dir, "ch07-tinted-stats.md", transcript("ch07 --scene tinted-sphere --stats -o /tmp/t.png", line), stamp)
+    write(out_dir, "ch07-tinted-reflections.md",
+          [f"The {n(s['rays']['reflection'])} reflection rays are the camera rays that hit the gold ball, one each."])
+
+
+def ch08(bin_dir, out_dir, stamp):
+    ch08 = os.path.join(bin_dir, "ch08")
+    s, line = stats(ch08, "glass-sphere")
+    refl, refr = s["rays"]["reflection"], s["rays"]["refraction"]
+    need(refl < refr, "fewer reflection rays than refraction rays in glass-sphere")
+    write(out_dir, "ch08-glass-stats.md", transcript("ch08 --scene glass-sphere --stats -o /tmp/x.png", line), stamp)
+    write(out_dir, "ch08-glass-rays.md",
+          [f"Every glass hit below the depth limit could cast one ray of each kind, but there are fewer reflection "
+           f"rays ({n(refl)}) than refraction rays ({n(refr)})."])
+    b, _ = stats(ch08, "glass-block")
+    t, _ = stats(ch08, "tir")
+    write(out_dir, "ch08-block-tir-rays.md",
+          [f"`glass-block` casts {n(b['rays']['reflection'])} reflection rays and {n(b['rays']['refraction'])} "
+           f"refraction rays, and `tir` {n(t['rays']['reflection'])} and {n(t['rays']['refraction'])}."])
+
+
+def ch09(bin_dir, out_dir, stamp):
+    s, line = stats(os.path.join(bin_dir, "ch09"), "instances")
+    inst = s["instancing"]
+    need(inst["instances"] == 25 and s["scene_kept"]["triangles"] == 1280, "25 instances of one 1,280-triangle ball")
+    need(inst["shared_bytes"] % 24 == 0, "the bytes 24 more copies would take")
+    write(out_dir, "ch09-instances-stats.md", transcript("ch09 --scene instances --stats -o /tmp/y.png", line), stamp)
+    one = inst["shared_bytes"] // 24
+    write(out_dir, "ch09-instances-bytes.md",
+          [f"The ball has 642 vertices and 1,280 triangles. With its vertex normals, in {s['real']} precision, it "
+           f"takes {n(one)} bytes, and 24 more copies would take $24 \\times {tex(one)} = {tex(24 * one)}$."])
 
 
 def ch06(bin_dir, out_dir, stamp):
@@ -180,6 +289,10 @@ def main():
              f"{os.cpu_count()} cores._")
     os.makedirs(out_dir, exist_ok=True)
     ch02(bin_dir, out_dir)
+    ch05(bin_dir, out_dir, stamp)
+    ch07(bin_dir, out_dir, stamp)
+    ch08(bin_dir, out_dir, stamp)
+    ch09(bin_dir, out_dir, stamp)
     ch06(bin_dir, out_dir, stamp)
     ch17(bin_dir, out_dir)
     ch18(bin_dir, out_dir)
