@@ -1,0 +1,301 @@
+"""The ray and random-number counts chapters 2, 5-9, 17 and 18 quote from --stats and --pick
+(./lab bench counts).
+
+    python3 bench/ray_counts.py BIN_DIR OUT_DIR
+
+Writes, into OUT_DIR (book/measured/):
+
+  ch02-pick-middle.md    §2.5: what --pick prints for the middle pixel of a 201x151 image
+  ch02-pick-default.md   §2.5: the t of --pick 200,150 at the default 400x300
+  ch05-skipping-*.md     §5.7: spheres and skipping, whole (dated), and the terms both evaluate
+  ch07-depth-*.md        §7.3: mirrors' rays at each --depth, and what they add up to
+  ch07-tinted-*.md       §7.7: tinted-sphere's --stats (dated), and its reflection rays
+  ch08-*.md              §8.7: glass-sphere's --stats (dated), its rays, glass-block's and tir's
+  ch09-instances-*.md    §9.5: instances' --stats (dated), and the bytes sharing saves
+  ch06-shadows-stats.md  §6.7: what --stats prints for shadows, whole (it has a time: dated)
+  ch06-shadow-rays.md    §6.7: what its counts add up to, and conic's and acne's
+  ch17-grazing-stats.md  §17.3: the glossy reflections tried in grazing, and those lost
+  ch17-plates-rays.md    §17.5: plates' rays, the same with every plate sharp
+  ch17-plates-numbers.md §17.5: plates' random numbers, and the reflections that drew them
+  ch18-swept-box.md      §18.1: the search's nodes and primitives per ray, balls moving and still
+  ch18-time-numbers.md   §18.2: one time number per camera ray, none when nothing moves
+
+Every count is exact. The relations the prose relies on are checked, and a run that breaks one
+fails (exit 1) instead of writing a sentence the prose would contradict.
+"""
+
+import datetime
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+
+def cpu():
+    with open("/proc/cpuinfo") as f:
+        for line in f:
+            if line.startswith("model name"):
+                return line.split(":", 1)[1].strip()
+    return "unknown processor"
+
+
+def run(binary, *args):
+    return subprocess.run([binary, *args], check=True, capture_output=True, text=True).stdout.strip().splitlines()[-1]
+
+
+def stats(binary, scene, *args):
+    """--stats of a render: the parsed JSON and the line as printed."""
+    with tempfile.TemporaryDirectory() as tmp:
+        line = run(binary, "--scene", scene, *args, "--stats", "-o", os.path.join(tmp, "x.png"))
+    return json.loads(line), line
+
+
+def need(condition, what):
+    if not condition:
+        sys.exit(f"ray_counts.py: the chapter's prose no longer holds: {what}")
+
+
+def n(x):
+    return f"{x:,}"
+
+
+def tex(x):
+    return n(x).replace(",", "{,}")
+
+
+def write(out_dir, name, lines, stamp=None):
+    """Exact counts need no date (stamp None); a time does."""
+    with open(os.path.join(out_dir, name), "w") as f:
+        f.write("\n".join(([stamp, ""] if stamp else []) + lines).rstrip() + "\n")
+    print(f"== {name}\n" + "\n".join(lines))
+
+
+def without(path, key, tmp):
+    """A copy of the scene file with KEY removed from every surface (and glossy materials)."""
+    with open(path) as f:
+        scene = json.load(f)
+    removed = 0
+    materials = scene.get("materials", {})
+    for part in scene.get("surfaces", []) + list(materials.values() if isinstance(materials, dict) else materials):
+        if isinstance(part, dict) and key in part:
+            del part[key]
+            removed += 1
+    need(removed > 0, f"{path} has a '{key}' key to remove")
+    out = os.path.join(tmp, f"no-{key}-" + os.path.basename(path))
+    with open(out, "w") as f:
+        json.dump(scene, f)
+    return out
+
+
+def ch02(bin_dir, out_dir):
+    command = ["--scene", "sphere", "--width", "201", "--height", "151", "--pick", "100,75"]
+    line = run(os.path.join(bin_dir, "ch02"), *command)
+    middle = json.loads(line)
+    need(middle["hit"] and middle["t"] == 2 and middle["normal"] == [0, 0, 1],
+         "the middle pixel's ray meets the sphere at t = 2 exactly, facing the eye")
+    write(out_dir, "ch02-pick-middle.md", ["```sh", "$ build/release/bin/ch02 " + " ".join(command), line, "```"])
+    pick = json.loads(run(os.path.join(bin_dir, "ch02"), "--scene", "sphere", "--pick", "200,150"))
+    need(pick["hit"] and 2 < pick["t"] < 2.001, "the pixel beside the centre sees the sphere at a t a little over 2")
+    write(out_dir, "ch02-pick-default.md",
+          [f"At the default 400×300 there is no middle pixel. `--pick 200,150` is the pixel just right of and "
+           f"below the centre, and its $t$ is a little over 2 ({pick['t']:.8g})."])
+
+
+def transcript(command, line):
+    return ["```text", "$ build/release/bin/" + command, line, "```"]
+
+
+def ch05(bin_dir, out_dir, stamp):
+    ch05 = os.path.join(bin_dir, "ch05")
+    a, la = stats(ch05, "spheres")
+    b, lb = stats(ch05, "skipping")
+    need(a["shading"] == b["shading"], "skipping evaluates the terms spheres does")
+    need(b["scene_skipped"]["black_lights"] == 1 and b["scene_skipped"]["unused_materials"] == 2,
+         "skipping's black light and two unused materials are skipped")
+    with tempfile.TemporaryDirectory() as tmp:
+        images = []
+        for scene in ("spheres", "skipping"):
+            subprocess.run([ch05, "--scene", scene, "-o", os.path.join(tmp, scene + ".png")], check=True,
+                           capture_output=True)
+            with open(os.path.join(tmp, scene + ".png"), "rb") as f:
+                images.append(f.read())
+    need(images[0] == images[1], "spheres and skipping render the same image, byte for byte")
+    t = a["shading"]
+    need(t["specular_terms"] < t["light_terms"] / 2, "fewer than half the light terms need a highlight")
+    write(out_dir, "ch05-skipping-stats.md",
+          transcript("ch05 --scene spheres --stats -o /tmp/a.png", la)[:-1] +
+          ["$ build/release/bin/ch05 --scene skipping --stats -o /tmp/b.png", lb, "```"], stamp)
+    write(out_dir, "ch05-skipping-terms.md",
+          [f"Both evaluate {n(t['light_terms'])} light terms and {n(t['specular_terms'])} highlight terms, and the two "
+           "images are identical byte for byte."])
+
+
+def ch07(bin_dir, out_dir, stamp):
+    ch07 = os.path.join(bin_dir, "ch07")
+    rows, last = [], None
+    for depth in range(0, 13):
+        s, _ = stats(ch07, "mirrors", "--depth", str(depth))
+        need(s["rays"]["camera"] == 120000, "120,000 camera rays at every depth")
+        r = (s["rays"]["reflection"], s["rays"]["shadow"], s["rays"]["total"])
+        if last is not None:
+            need(r[0] >= last[0], "reflection rays never fall with the depth")
+        rows.append((depth, r))
+        if last == r:
+            break
+        last = r
+    need(rows[-1][1] == rows[-2][1], "a depth past which nothing changes")
+    final = rows[-2][0]  # the first depth of the unchanging counts
+    while final > 0 and rows[final - 1][1] == rows[final][1]:
+        final -= 1
+    one, two = rows[1][1][0], rows[2][1][0]
+    need(0.5 < one / 120000 < 0.6, "a little over half the camera rays hit a mirror")
+    need(0.4 < (two - one) / one < 0.6, "depth 2 adds about half as many again")
+    gains = [rows[k][1][0] - rows[k - 1][1][0] for k in range(2, final + 1)]
+    need(all(b < a for a, b in zip(gains, gains[1:])), "each later step adds fewer")
+    table = ["| `--depth` | reflection rays | shadow rays | total |", "|---|---|---|---|"]
+    for depth, (refl, shadow, total) in rows[:final + 1]:
+        if depth in (0, 1, 2, 4, 8) or depth == final:
+            label = f"{depth} and more" if depth == final else str(depth)
+            table.append(f"| {label} | {n(refl)} | {n(shadow)} | {n(total)} |")
+    write(out_dir, "ch07-depth-table.md", table)
+    write(out_dir, "ch07-depth-mirror.md",
+          [f"A little over half the camera rays ({n(one)}) hit a mirror. Depth 2 adds about half as many again, and "
+           "each later step adds fewer, because most reflected rays leave the mirrors. They hit the floor, the wall "
+           "or a ball, or fly out over the walls into the sky. Only the rays near the vanishing point go on "
+           f"bouncing. Depth {final} adds the last {n(rows[final][1][0] - rows[final - 1][1][0])} reflection rays. "
+           f"From there on nothing changes, because no ray in this scene is reflected more than {final} times."])
+    s, line = stats(ch07, "tinted-sphere")
+    need(s["rays"]["refraction"] == 0 and s["rays"]["total"] == sum(s["rays"][k] for k in
+                                                                    ("camera", "reflection", "shadow")),
+         "tinted-sphere: no refraction rays, the total the sum of the kinds")
+    write(out_dir, "ch07-tinted-stats.md", transcript("ch07 --scene tinted-sphere --stats -o /tmp/t.png", line), stamp)
+    write(out_dir, "ch07-tinted-reflections.md",
+          [f"The {n(s['rays']['reflection'])} reflection rays are the camera rays that hit the gold ball, one each."])
+
+
+def ch08(bin_dir, out_dir, stamp):
+    ch08 = os.path.join(bin_dir, "ch08")
+    s, line = stats(ch08, "glass-sphere")
+    refl, refr = s["rays"]["reflection"], s["rays"]["refraction"]
+    need(refl < refr, "fewer reflection rays than refraction rays in glass-sphere")
+    write(out_dir, "ch08-glass-stats.md", transcript("ch08 --scene glass-sphere --stats -o /tmp/x.png", line), stamp)
+    write(out_dir, "ch08-glass-rays.md",
+          [f"Every glass hit below the depth limit could cast one ray of each kind, but there are fewer reflection "
+           f"rays ({n(refl)}) than refraction rays ({n(refr)})."])
+    b, _ = stats(ch08, "glass-block")
+    t, _ = stats(ch08, "tir")
+    write(out_dir, "ch08-block-tir-rays.md",
+          [f"`glass-block` casts {n(b['rays']['reflection'])} reflection rays and {n(b['rays']['refraction'])} "
+           f"refraction rays, and `tir` {n(t['rays']['reflection'])} and {n(t['rays']['refraction'])}."])
+
+
+def ch09(bin_dir, out_dir, stamp):
+    s, line = stats(os.path.join(bin_dir, "ch09"), "instances")
+    inst = s["instancing"]
+    need(inst["instances"] == 25 and s["scene_kept"]["triangles"] == 1280, "25 instances of one 1,280-triangle ball")
+    need(inst["shared_bytes"] % 24 == 0, "the bytes 24 more copies would take")
+    write(out_dir, "ch09-instances-stats.md", transcript("ch09 --scene instances --stats -o /tmp/y.png", line), stamp)
+    one = inst["shared_bytes"] // 24
+    write(out_dir, "ch09-instances-bytes.md",
+          [f"The ball has 642 vertices and 1,280 triangles. With its vertex normals, in {s['real']} precision, it "
+           f"takes {n(one)} bytes, and 24 more copies would take $24 \\times {tex(one)} = {tex(24 * one)}$."])
+
+
+def ch06(bin_dir, out_dir, stamp):
+    ch06 = os.path.join(bin_dir, "ch06")
+    s, line = stats(ch06, "shadows")
+    write(out_dir, "ch06-shadows-stats.md",
+          ["```text", "$ build/release/bin/ch06 --scene shadows --stats -o /tmp/a.png", line, "```"], stamp)
+    cam, terms, shadow = s["rays"]["camera"], s["shading"]["light_terms"], s["rays"]["shadow"]
+    need(s["scene_kept"]["lights"] == 2, "shadows has two lights")
+    need(terms % 2 == 0 and terms // 2 < cam, "two light terms per camera ray that hits, and some see the sky")
+    need(shadow < terms, "at most one shadow ray per light term, and some lights behind the surface")
+    need(s["rays"]["total"] == cam + shadow, "no rays but camera and shadow rays")
+    c, _ = stats(ch06, "conic")
+    a, _ = stats(ch06, "acne")
+    for name, x in (("conic", c), ("acne", a)):
+        need(x["rays"]["shadow"] <= x["shading"]["light_terms"], f"{name}: at most one shadow ray per light term")
+    write(out_dir, "ch06-shadow-rays.md",
+          [f"There are two lights, and {n(terms)} light terms, so {n(terms // 2)} of the {n(cam)} camera rays hit "
+           f"something. The rest see the sky. The integrator cast {n(shadow)} shadow rays, one for each light term "
+           f"except {n(terms - shadow)}, where the light was behind the surface (§6.2)."])
+    write(out_dir, "ch06-conic-acne-rays.md",
+          [f"`conic` casts {n(c['rays']['shadow'])} shadow rays for its {n(c['shading']['light_terms'])} light "
+           f"terms, and the built-in `acne` {n(a['rays']['shadow'])} for {n(a['shading']['light_terms'])}."])
+
+
+def ch17(bin_dir, out_dir):
+    ch17 = os.path.join(bin_dir, "ch17")
+    g, _ = stats(ch17, "grazing")
+    glossy, refl = g["random_numbers"]["glossy"], g["rays"]["reflection"]
+    need((g["width"], g["height"]) == (400, 300), "grazing renders at 400 x 300")
+    need(glossy % 2 == 0 and refl < glossy // 2, "two numbers per glossy reflection, and some lost below the floor")
+    tried = glossy // 2
+    write(out_dir, "ch17-grazing-stats.md",
+          [f"Over the whole {g['width']} × {g['height']} picture, `--stats` counts {n(glossy)} glossy numbers, that "
+           f"is {n(tried)} glossy reflections tried, and {n(refl)} reflection rays. So {n(tried - refl)} of them "
+           f"({100 * (tried - refl) / tried:.1f} %) pointed below the floor and cast nothing."])
+
+    plates = "chapters/ch17_glossy_reflection/scenes/plates.json"
+    p, _ = stats(ch17, "plates")
+    with tempfile.TemporaryDirectory() as tmp:
+        q, _ = stats(ch17, without(plates, "glossy", tmp))
+    need((p["width"], p["height"], p["spp"]) == (400, 300, 16), "plates renders at 400 x 300, 16 samples per pixel")
+    need(p["rays"] == q["rays"], "the glossy plates cast exactly the rays the sharp ones cast")
+    need(q["random_numbers"]["glossy"] == 0, "sharp plates draw no glossy number")
+    need(p["random_numbers"]["pixel"] == 2 * p["rays"]["camera"], "two film numbers per camera ray")
+    pg, pr = p["random_numbers"]["glossy"], p["rays"]["reflection"]
+    need(pg % 2 == 0 and pg // 2 < pr, "two numbers per glossy reflection; the sharp plate's reflections draw none")
+    rays = ["camera", "reflection", "refraction", "shadow", "total"]
+    dims = ["glossy", "lens", "light", "other", "pixel", "time"]
+    compact = lambda d, keys: "{" + ",".join(f'"{k}":{json.dumps(d[k])}' for k in keys) + "}"
+    write(out_dir, "ch17-plates-rays.md", ["```text", f'"rays":{compact(p["rays"], rays)}', "```"])
+    write(out_dir, "ch17-plates-numbers.md",
+          ["```text", f'"random_numbers":{compact(p["random_numbers"], dims)}', "```", "",
+           "`random_numbers` counts the numbers each dimension drew for samples: two per camera ray for the pixel, "
+           f"and two per glossy reflection. The satin and brushed plates took {n(pg // 2)} of the {n(pr)} "
+           "reflections. The sharp plate drew nothing."])
+
+
+def ch18(bin_dir, out_dir):
+    ch18 = os.path.join(bin_dir, "ch18")
+    balls = "chapters/ch18_motion_blur/scenes/balls.json"
+    m, _ = stats(ch18, "balls")
+    with tempfile.TemporaryDirectory() as tmp:
+        s, _ = stats(ch18, without(balls, "moves_to", tmp))
+    ms, ss = m["search"], s["search"]
+    need(ms["nodes_per_ray"] > ss["nodes_per_ray"] and ms["primitives_per_ray"] > ss["primitives_per_ray"],
+         "the swept boxes make the search visit more nodes and test more primitives per ray")
+    more = ms["primitives_per_ray"] / ss["primitives_per_ray"] - 1
+    write(out_dir, "ch18-swept-box.md",
+          [f"With `--stats`, the search visits {ms['nodes_per_ray']:.2f} nodes and tests "
+           f"{ms['primitives_per_ray']:.3f} primitives per ray in `balls`, against {ss['nodes_per_ray']:.2f} and "
+           f"{ss['primitives_per_ray']:.3f} in the still copy. That is {100 * more:.0f} % more primitive tests per "
+           "ray, for two balls that move 1 and 2 units."])
+    need(m["random_numbers"]["time"] == m["rays"]["camera"], "one time number per camera ray in balls")
+    need(s["random_numbers"]["time"] == 0, "no time number when nothing moves")
+    write(out_dir, "ch18-time-numbers.md",
+          [f"`random_numbers.time` is 0 for every scene without `moves_to`, and for `balls` at {m['width']} × "
+           f"{m['height']} with {m['spp']} samples per pixel it is {n(m['random_numbers']['time'])}, one number per "
+           "camera ray."])
+
+
+def main():
+    if len(sys.argv) != 3:
+        sys.exit("usage: ray_counts.py BIN_DIR OUT_DIR")
+    bin_dir, out_dir = sys.argv[1:]
+    stamp = (f"_Measured by `./lab bench counts` on {datetime.date.today().isoformat()}, {cpu()}, "
+             f"{os.cpu_count()} cores._")
+    os.makedirs(out_dir, exist_ok=True)
+    ch02(bin_dir, out_dir)
+    ch05(bin_dir, out_dir, stamp)
+    ch07(bin_dir, out_dir, stamp)
+    ch08(bin_dir, out_dir, stamp)
+    ch09(bin_dir, out_dir, stamp)
+    ch06(bin_dir, out_dir, stamp)
+    ch17(bin_dir, out_dir)
+    ch18(bin_dir, out_dir)
+
+
+main()
