@@ -55,8 +55,9 @@ struct SpawnedRay {
 // on the side of the unit geometric normal n_side. `error` is how far the computed p may lie
 // off the true surface, as the shape that found it reports it (HitRecord::error): the robust
 // method starts at least that far out along n_side, since offset_origin's step follows p's
-// coordinates, not the shape's size (a sphere of radius 10^4 centred 10^4 below the
-// origin has hit points near y = 0, where the step is 2^-40, and rounding of 10^4's size).
+// coordinates, not the shape's size: a ground sphere of radius 1000 centred 1000 below the
+// origin has hit points near y = 0, where the step is 2^-40 (2^-45 just past |y| = 1/32),
+// and errors the size of a unit in the last place of 1000 (book §6.3).
 inline SpawnedRay spawn_ray(const Vec3& p, const Vec3& n_side, const Vec3& direction, Real max, const Offset& o,
                             Real time = 0, Real error = 0) {
     switch (o.method) {
