@@ -120,8 +120,8 @@ TEST_CASE("6.1 a big sphere's error bound: no acne on a ground sphere of radius 
         CHECK(with_bound.acne == 0);
         // The reproduction: offset_origin's step alone (no bound) is smaller than the
         // sphere's rounding, in double from 10^3 on (where p's y passes 1/32 the step falls to
-        // 2^-45), in float everywhere. Measured, the threshold is near 0.5 epsilons: the
-        // library's kSphereErrorEpsilons leaves a wide margin.
+        // 2^-45), in float at every radius. Measured, a bound of 1/2 epsilon (double) or 1
+        // (float) is the least that clears these rays; kSphereErrorEpsilons = 8 is the margin.
         const SelfShadow step_only = big_ground_acne(radius, 0);
         CHECK(step_only.acne > 1000);
         CHECK(big_ground_acne(radius, Real(0.125)).acne > 0);
