@@ -28,6 +28,11 @@ struct HitRecord {
     // Unit normal for shading: the geometric one, except on meshes with vertex normals, where
     // it is interpolated (smooth shading). Offsets and inside/outside use `normal` only.
     Vec3 shading_normal{0};
+    // How far p may lie off the true surface, along the normal: the rounding of p and of the
+    // shape's own test for a ray that starts near it, which grow with the shape's size and
+    // place, not with p's coordinates. 0 for shapes whose error offset_origin's step already
+    // covers. spawn_ray starts secondary rays at least this far out (book §6.3).
+    Real error = 0;
     SurfaceId surface = kNone;
     MaterialId material = 0;
     std::uint32_t primitive = kNone;  // which triangle of a mesh, for picking

@@ -1,6 +1,7 @@
 #include "geometry/sphere.hpp"
 
 #include <cmath>
+#include <limits>
 #include <stdexcept>
 
 namespace rt {
@@ -14,6 +15,11 @@ Sphere::Sphere(const Vec3& c, Real r, const Vec3& m) : center(c), radius(r), mot
     if (!(r > 0) || !std::isfinite(r)) throw std::invalid_argument("sphere: radius must be finite and > 0");
 }
 
+Real sphere_error(const Sphere& s) {
+    const Vec3 c = glm::abs(s.center);
+    return Real(kSphereErrorEpsilons) * std::numeric_limits<Real>::epsilon() * (c.x + c.y + c.z + s.radius);
+}
+
 HitRecord record(const Sphere& s, const Ray& ray, const SphereHit& h, SurfaceRef who) {
     // (p - c)/R is the unit normal of an exact p. The computed p carries the rounding of
     // e + t d, so normalise, and put p back onto the sphere along it.
@@ -23,6 +29,7 @@ HitRecord record(const Sphere& s, const Ray& ray, const SphereHit& h, SurfaceRef
     rec.p = s.center + s.radius * n;
     rec.normal = n;
     rec.shading_normal = n;
+    rec.error = sphere_error(s);
     rec.surface = who.surface;
     rec.material = who.material;
     return rec;

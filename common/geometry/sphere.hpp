@@ -60,6 +60,16 @@ bool sphere_roots(const Ray& ray, const Vec3& center, Real radius, Real& t_near,
 // set if there is one; false and `result` untouched if not.
 bool hit(const Sphere& sphere, const Ray& ray, Interval interval, SphereHit& result);
 
+// How far a computed hit point may lie off the sphere, along its normal, and how far the
+// sphere test's near root strays for a ray that starts that close to it (the record's
+// `error`, which spawn_ray clears). Both are rounding of numbers the size of the centre's
+// coordinates and the radius, not of the hit point's: p = c + R n rounds to a unit in the
+// last place of |c| + R, and the test's f . f - R^2 rounds to one of R^2, which is a height
+// error of about epsilon R. kSphereErrorEpsilons machine epsilons of |c|_1 + R covers both,
+// with margin (book §6.3; tests/test_ch06.cpp measures it from 10^3 to 10^5).
+inline constexpr int kSphereErrorEpsilons = 8;
+Real sphere_error(const Sphere& sphere);
+
 // The whole record for a sphere hit: point on the sphere, unit outward normal.
 HitRecord record(const Sphere& sphere, const Ray& ray, const SphereHit& h, SurfaceRef who = {});
 

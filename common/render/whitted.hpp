@@ -18,6 +18,7 @@ struct ShadePoint {
     Vec3 v;         // unit, towards the viewer
     Color diffuse;  // the material's diffuse colour at p
     const Material& material;
+    Real error = 0;  // how far p may lie off the surface (HitRecord::error): spawn_ray clears it
 };
 
 // Casts the shadow ray `s` towards light number `light` of the scene (any-hit, counted as a
