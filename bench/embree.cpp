@@ -247,6 +247,7 @@ void count(const std::string& input, const char* kind, const char* side, const s
            Cast&& cast) {
     if (rays.empty()) return;
     long n = 0;
+    traversal_tally = {};
     CALLGRIND_START_INSTRUMENTATION;
     for (int k = 0; k < repeats; ++k)
         for (const Ray& r : rays) n += cast(r);
@@ -254,7 +255,9 @@ void count(const std::string& input, const char* kind, const char* side, const s
     const std::string name = input + ": " + kind + ", " + side + ", " + std::to_string(repeats) + " x " +
                              std::to_string(rays.size()) + " rays";
     CALLGRIND_DUMP_STATS_AT(name.c_str());
-    std::printf("  counted %s (%ld answered yes)\n", name.c_str(), n);
+    const double casts = double(repeats) * double(rays.size());
+    std::printf("  counted %s (%ld answered yes; the lab's tally per ray: %.1f boxes, %.1f triangles)\n", name.c_str(),
+                n, double(traversal_tally.nodes) / casts, double(traversal_tally.items) / casts);
 }
 
 void measure(const Input& input, int size, int frame, int rounds, bool classes, int instructions) {
