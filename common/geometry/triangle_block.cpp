@@ -25,11 +25,9 @@ RayShear::RayShear(const Ray& ray, const Vec3& inv_direction) {
     origin_size = float_above(std::max({ao.x, ao.y, ao.z}));
 }
 
-[[gnu::noinline]] bool blocks_ray_decided(const TriangleBlock& block, const std::array<Vec3, 3>* corners,
-                                          const RayShear& shear, const Ray& ray, Interval interval) {
-    const BlockLanes lanes = classify(block, shear, interval);
-    return lanes.surely != 0 ||
-           exact_hits(lanes.maybe, block, corners, ray, interval,
+[[gnu::noinline]] bool blocks_ray_exactly(unsigned lanes, const TriangleBlock& block,
+                                          const std::array<Vec3, 3>* corners, const Ray& ray, Interval interval) {
+    return exact_hits(lanes, block, corners, ray, interval,
                       [](std::uint32_t, const TriangleHit&, const std::array<Vec3, 3>&) { return true; });
 }
 

@@ -109,9 +109,7 @@ struct BlockLanes {
 // triangle the ray's line might cross, whatever its t, and `surely` is empty. That is what
 // the closest-hit search asks (candidates): on the bunny the t tests cost ~160 instructions
 // per hit ray and saved almost no exact tests, which check t themselves.
-// kSurely false stops after the t tests: `maybe` is whole, `surely` empty (blocks_ray's
-// first part).
-template <bool kDistances = true, bool kSurely = true>
+template <bool kDistances = true>
 [[gnu::always_inline]] inline BlockLanes classify(const TriangleBlock& block, const RayShear& r, Interval interval) {
     using namespace block_detail;
     const int k[3] = {r.kx, r.ky, r.kz};
@@ -151,7 +149,10 @@ template <bool kDistances = true, bool kSurely = true>
     // t = T / det compared without dividing: det_p > 0 wherever `sure` holds.
     out |= sure &
            ((T_p * (1 - 0x1p-8f) > det_p * float(interval.max)) | (T_p * (1 + 0x1p-8f) < det_p * float(interval.min)));
-    if (!kSurely) return {keep & ~bits(out), 0};
+    // Most blocks a shadow ray reaches end here: the t tests drop the lanes the edge
+    // functions kept (the triangle the ray leaves lies behind its origin).
+    const unsigned left = keep & ~bits(out);
+    if (left == 0) return {0, 0};
 
     // A certain hit: every edge function beyond twice its error bound with one sign (the
     // exact test, whose own error is at most the bound, sees that sign too), and t inside
@@ -162,7 +163,7 @@ template <bool kDistances = true, bool kSurely = true>
     const Lanes det_lo = det_p - 2 * err_det, T_lo = T_p - 2 * err_T, T_hi = T_p + 2 * err_T;
     Mask within = (det_lo > 0) & (T_lo > 0) & (T_hi * (1 + 0x1p-20f) < det_lo * float(interval.max));
     if (interval.min > 0) within &= T_lo > (det_p + 2 * err_det) * float(interval.min) * (1 + 0x1p-20f);
-    return {keep & ~bits(out), bits(signs & within) & used};
+    return {left, bits(signs & within) & used};
 }
 
 // The lanes whose triangle the ray's line might cross (classify's `maybe` without the t
@@ -203,20 +204,17 @@ bool for_each_hit(const TriangleBlock& block, const std::array<Vec3, 3>* corners
 // certain needs no exact test (an occlusion query asks for no t and no triangle); the others
 // the filter keeps go to exercise 3.2's test.
 //
-// In two parts, so that the search can take the first inline: the filter up to its t tests,
-// which on a shadow ray drops every lane of almost every block (the one holding the ray's own
-// surface too: that triangle lies behind the origin); and, out of line, for the rare block
-// with lanes left, the whole filter again with its test for certain hits, and the exact
-// test. A call costs the search more than the filter's repetition: every vector register
-// is the caller's to save, and the search keeps the ray's lanes in ten (on the bunny's
-// unblocked shadow rays, 1,278 -> ~1,000 instructions per ray; book §C.2).
-bool blocks_ray_decided(const TriangleBlock& block, const std::array<Vec3, 3>* corners, const RayShear& shear,
-                        const Ray& ray, Interval interval);
+// The filter is inline in the search, the exact test out of line: it is rare (one block in
+// a thousand on the bunny's unblocked shadow rays), and a call costs the search more than the
+// filter itself: every vector register is the caller's to save, and the search keeps the
+// ray's lanes in ten (book §C.2).
+bool blocks_ray_exactly(unsigned lanes, const TriangleBlock& block, const std::array<Vec3, 3>* corners, const Ray& ray,
+                        Interval interval);
 
 [[gnu::always_inline]] inline bool blocks_ray(const TriangleBlock& block, const std::array<Vec3, 3>* corners,
                                               const RayShear& shear, const Ray& ray, Interval interval) {
-    return classify<true, false>(block, shear, interval).maybe != 0 &&
-           blocks_ray_decided(block, corners, shear, ray, interval);
+    const BlockLanes lanes = classify(block, shear, interval);
+    return lanes.surely != 0 || (lanes.maybe != 0 && blocks_ray_exactly(lanes.maybe, block, corners, ray, interval));
 }
 
 // Triangles packed four to a block in the order given.
