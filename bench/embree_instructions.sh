@@ -5,7 +5,13 @@
 # those casts. Unlike times, the counts are the same in every run, on a loaded machine too.
 #
 #   bench/embree_instructions.sh BIN N [bench_embree options] [MESH.obj ...]
-#   e.g. bench/embree_instructions.sh build/release/bin/bench_embree 3 --no-procedural BUNNY.obj
+#   e.g. bench/embree_instructions.sh build/cg/bin/bench_embree 1 --no-procedural BUNNY.obj
+#
+# Debian 12's valgrind (3.19) cannot run AVX-512 instructions, which the release preset's
+# -march=native emits on a processor that has them; build BIN for AVX2 instead, as release
+# is otherwise (the counts are then those of the AVX2 code):
+#   cmake -S . -B build/cg -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTLAB_IPO=ON -DRTLAB_NATIVE=OFF \
+#       -DCMAKE_CXX_FLAGS=-march=x86-64-v3 && cmake --build build/cg --target bench_embree
 set -euo pipefail
 (($# >= 2)) || { echo "usage: bench/embree_instructions.sh BIN N [bench_embree options] [MESH.obj ...]" >&2; exit 2; }
 bin=$1 n=$2
@@ -15,8 +21,16 @@ command -v valgrind >/dev/null || { echo "bench/embree_instructions.sh: needs va
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 # --instr-atstart=no: the builds and the agreement checks run uninstrumented (and faster).
-valgrind --tool=callgrind --instr-atstart=no --callgrind-out-file="$out/cg" "$bin" --instructions "$n" "$@" \
-    >"$out/stdout" 2>"$out/valgrind"
+if ! valgrind --tool=callgrind --instr-atstart=no --callgrind-out-file="$out/cg" "$bin" --instructions "$n" "$@" \
+    >"$out/stdout" 2>"$out/valgrind"; then
+    if grep -q "unhandled instruction" "$out/valgrind"; then
+        echo "bench/embree_instructions.sh: valgrind cannot run $bin (AVX-512?): build it for AVX2, see the header" >&2
+    else
+        echo "bench/embree_instructions.sh: $bin failed under valgrind:" >&2
+        tail -n 5 "$out/valgrind" >&2
+    fi
+    exit 1
+fi
 python3 - "$out"/cg.* <<'PY'
 import re, sys
 rows = {}  # (input, kind) -> {side: (instructions, rays)}
