@@ -168,9 +168,8 @@ bool occluded(const Mesh& mesh, const Ray& ray, Interval interval) {
     const RayShear& shear = r.shear();
     return any_hit(
         a.wide, *r.wide, interval,
-        [&](std::uint32_t b, std::uint32_t, Interval& iv) {
-            return blocks_ray(a.blocks[b], a.corners_of(b), shear, ray, iv);
-        },
+        [&](std::uint32_t b, std::uint32_t, Interval & iv)
+            __attribute__((always_inline)) { return blocks_ray(a.blocks[b], a.corners_of(b), shear, ray, iv); },
         [&](std::uint32_t b) { prefetch(a.blocks[b]); });
 }
 
