@@ -2,27 +2,43 @@
 // triangles, one ray at a time on each side (rtcIntersect1 / rtcOccluded1), on 1 and 2
 // threads, measured in the same run. Built only when Debian's libembree-dev is installed.
 //
-//   build/release/bin/bench_embree [--rounds N] [--size S] [--no-procedural] [--only TEXT] [--by-class]
-//                                   [MESH.obj ...]
+//   build/release/bin/bench_embree [--rounds N] [--size S] [--frame F] [--no-procedural] [--only TEXT]
+//                                   [--by-class] [--instructions N] [MESH.obj ...]
 //
 // Inputs: a terrain of ~10^5 and one of ~10^6 triangles, a soup of 10^6 triangles, and every
 // OBJ given; --only keeps those whose name contains TEXT. Rays: the primary rays of an S x S
 // camera (default 512) looking at the mesh, and shadow rays from each primary hit (the
 // lab's, offset along the ray) towards a point light.
-// For each input and thread count it prints Mrays/s of both and their ratio (best of N
-// rounds, the two interleaved). Like for like, the lab's side of a primary ray is the mesh's
-// own search, which gives what rtcIntersect1 gives (t, triangle, barycentrics); one more row
-// times what the renderer calls, the search through the scene made into a whole HitRecord,
-// against the same rtcIntersect1. Then build times (the lab's SAH, Embree's high-quality build),
-// memory per triangle, and how often the two agree: hit or miss, and t to 1e-4 relative.
+// For each input it prints first the build times on 1 and 2 threads (the lab's SAH build,
+// Embree's high-quality build, each inside a TBB task arena of that many threads), memory per
+// triangle, and how often the two agree: hit or miss, and t to 1e-4 relative. Then, for each
+// thread count, Mrays/s of both and their ratio (best of N rounds, the two interleaved). Like
+// for like, the lab's side of a primary ray is the mesh's own search, which gives what
+// rtcIntersect1 gives (t, triangle, barycentrics); one more row times what the renderer
+// calls, the search through the scene made into a whole HitRecord, against the same
+// rtcIntersect1; the last, "whole frame", times a chapter program's whole render of an F x F
+// frame (default 1024; 0 leaves it out) shaded by normals, against Embree casting the same
+// camera rays.
 // --by-class adds, for the primary rays on one thread, nanoseconds per ray of each side for
 // three kinds of ray apart: those that miss the mesh's box, those that enter it and miss,
 // and those that hit (each kind timed alone, so the branch predictor sees one kind).
+// --instructions N times nothing: it casts each kind of ray N times for callgrind to count
+// (count() below; bench/embree_instructions.sh).
 #include "accel/accel.hpp"
 #include "geometry/procedural.hpp"
 #include "io/obj.hpp"
+#include "render/integrators.hpp"
+#include "render/render.hpp"
+#include "render/scene.hpp"
 
 #include <embree3/rtcore.h>
+#if __has_include(<valgrind/callgrind.h>)
+#include <valgrind/callgrind.h>
+#else  // without valgrind's header, --instructions casts the rays and nothing counts them
+#define CALLGRIND_START_INSTRUMENTATION
+#define CALLGRIND_STOP_INSTRUMENTATION
+#define CALLGRIND_DUMP_STATS_AT(name) (void)(name)
+#endif
 #include <tbb/blocked_range.h>
 #include <tbb/parallel_for.h>
 #include <tbb/task_arena.h>
@@ -33,6 +49,9 @@
 #include <cstdio>
 #include <cstdlib>
 #include <functional>
+#include <memory>
+#include <numbers>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -59,7 +78,11 @@ struct EmbreeScene {
     double build_seconds = 0;
     long long bytes = 0;
 
-    EmbreeScene(const MeshData& mesh) {
+    // Built inside a task arena of `threads`: Embree's TBB tasks run in the caller's arena.
+    EmbreeScene(const MeshData& mesh, int threads) {
+        tbb::task_arena(threads).execute([&] { build(mesh); });
+    }
+    void build(const MeshData& mesh) {
         device = rtcNewDevice(nullptr);
         rtcSetDeviceMemoryMonitorFunction(device, monitor, nullptr);
         const long long before = embree_bytes;
@@ -123,15 +146,16 @@ struct EmbreeScene {
     }
 };
 
-// Seconds for `work(begin, end)` over n rays on `threads` threads, in chunks of 4096.
-double timed(int threads, std::size_t n, const std::function<void(std::size_t, std::size_t)>& work) {
+// Seconds for `work(begin, end)` over n rays on `threads` threads, in chunks of `grain`.
+double timed(int threads, std::size_t n, const std::function<void(std::size_t, std::size_t)>& work,
+             std::size_t grain = 1024) {
     tbb::task_arena arena(threads);
     const auto start = Clock::now();
     arena.execute([&] {
         // Small chunks handed out as threads ask (rays cost from a few to hundreds of
         // nanoseconds, row by row), so that neither thread waits long for the other at the end.
         tbb::parallel_for(
-            tbb::blocked_range<std::size_t>(0, n, 1024),
+            tbb::blocked_range<std::size_t>(0, n, grain),
             [&](const tbb::blocked_range<std::size_t>& r) { work(r.begin(), r.end()); }, tbb::simple_partitioner());
     });
     return seconds_since(start);
@@ -184,16 +208,80 @@ void by_class(const Accel& accel, const SurfaceList& list, const Mesh& mesh, con
     }
 }
 
-void measure(const Input& input, int size, int rounds, bool classes) {
-    const auto lab_start = Clock::now();
+// The lab's side of a build: the mesh (its SAH tree, collapsed to the wide one, and its
+// triangle blocks) and the scene's structure over it, inside a task arena of `threads`.
+struct LabScene {
     SurfaceList list;
-    list.add(Mesh(input.mesh));
-    const Accel accel(list, AccelKind::fast);
-    const double lab_build = seconds_since(lab_start);
+    std::optional<Accel> accel;
+    double build_seconds = 0;
+
+    LabScene(const MeshData& data, int threads) {
+        tbb::task_arena arena(threads);
+        const auto start = Clock::now();
+        arena.execute([&] {
+            list.add(Mesh(data));
+            accel.emplace(list, AccelKind::fast);
+        });
+        build_seconds = seconds_since(start);
+    }
+};
+
+// A chapter program's frame (ChapterApp::execute without the image file): the scene as a
+// scene file with "shading": "normal" makes it, the camera looking at the mesh's box from
+// `eye`, its field of view the one the primary rays above span, one sample per pixel.
+Scene frame_scene(const Mesh& mesh, const Vec3& eye, const Vec3& centre) {
+    Scene scene =
+        look_at(eye, centre, Real(2 * std::atan(0.45) * 180 / std::numbers::pi), make_integrator(Shading::normal));
+    scene.surfaces.add(mesh);  // a copy shares the mesh's data and tree
+    scene.build_accel(scene.accel_kind);
+    return scene;
+}
+
+// --instructions N: each kind of ray cast N times on one thread, each side alone, between
+// callgrind's start and stop of instrumentation, and a dump of the counts named after it
+// ("INPUT: KIND, SIDE, N x RAYS rays"): run under valgrind --tool=callgrind
+// --instr-atstart=no, each dump holds the instructions of those casts and nothing else
+// (bench/embree_instructions.sh divides them by the rays).
+template <class Cast>
+void count(const std::string& input, const char* kind, const char* side, const std::vector<Ray>& rays, int repeats,
+           Cast&& cast) {
+    if (rays.empty()) return;
+    long n = 0;
+    traversal_tally = {};
+    CALLGRIND_START_INSTRUMENTATION;
+    for (int k = 0; k < repeats; ++k)
+        for (const Ray& r : rays) n += cast(r);
+    CALLGRIND_STOP_INSTRUMENTATION;
+    const std::string name = input + ": " + kind + ", " + side + ", " + std::to_string(repeats) + " x " +
+                             std::to_string(rays.size()) + " rays";
+    CALLGRIND_DUMP_STATS_AT(name.c_str());
+    const double casts = double(repeats) * double(rays.size());
+    std::printf("  counted %s (%ld answered yes; the lab's tally per ray: %.1f boxes, %.1f triangles)\n", name.c_str(),
+                n, double(traversal_tally.nodes) / casts, double(traversal_tally.items) / casts);
+}
+
+void measure(const Input& input, int size, int frame, int rounds, bool classes, int instructions) {
+    // Each side built on 1 and on 2 threads, alternately; the ray rows use the 1-thread builds
+    // (the same trees: the lab's build is the same byte for byte on any thread count).
+    std::unique_ptr<LabScene> lab_scene;
+    std::unique_ptr<EmbreeScene> embree_scene;
+    double lab_build[2], embree_build[2];
+    for (int threads : {1, 2}) {
+        auto l = std::make_unique<LabScene>(input.mesh, threads);
+        auto e = std::make_unique<EmbreeScene>(input.mesh, threads);
+        lab_build[threads - 1] = l->build_seconds;
+        embree_build[threads - 1] = e->build_seconds;
+        if (threads == 1) {
+            lab_scene = std::move(l);
+            embree_scene = std::move(e);
+        }
+    }
+    const SurfaceList& list = lab_scene->list;
+    const Accel& accel = *lab_scene->accel;
     const Mesh& mesh = std::get<Mesh>(list[0].shape);
     const std::size_t triangles = mesh.data().triangles.size();
     const double lab_bytes = double(accel.info().bytes + memory_bytes(mesh.data()));
-    const EmbreeScene embree(mesh.data());
+    const EmbreeScene& embree = *embree_scene;
 
     // A camera on the diagonal above the mesh's box, its whole box in view.
     const Box box = mesh.box();
@@ -231,13 +319,31 @@ void measure(const Input& input, int size, int rounds, bool classes) {
 
     std::printf("\n%s: %zu triangles; %zu primary rays (%d hit), %zu shadow rays\n", input.name.c_str(), triangles,
                 primary.size(), both_hit, shadow.size());
-    std::printf(
-        "  build: lab SAH %.3f s, Embree high quality %.3f s; memory per triangle: lab %.1f B (mesh + BVH), "
-        "Embree %.1f B\n",
-        lab_build, embree.build_seconds, lab_bytes / double(triangles), double(embree.bytes) / double(triangles));
+    std::printf("  memory per triangle: lab %.1f B (mesh + BVH), Embree %.1f B\n", lab_bytes / double(triangles),
+                double(embree.bytes) / double(triangles));
     std::printf("  agreement: hit/miss %.4f %%, t within 1e-4 %.4f %% of common hits, shadow %.4f %%\n",
                 100.0 * agree / double(primary.size()), both_hit ? 100.0 * t_agree / both_hit : 100.0,
                 shadow.empty() ? 100.0 : 100.0 * shadow_agree / double(shadow.size()));
+    // The builds: the lab's SAH (the mesh's tree, wide tree and blocks, and the scene's
+    // structure) against Embree's high-quality build; the ratio is of speeds, as below.
+    std::printf("  %-22s %7s %12s %12s %7s\n", "build", "threads", "lab s", "Embree s", "ratio");
+    for (int threads : {1, 2})
+        std::printf("  %-22s %7d %12.3f %12.3f %7.2f\n", "SAH build", threads, lab_build[threads - 1],
+                    embree_build[threads - 1], embree_build[threads - 1] / lab_build[threads - 1]);
+    if (instructions > 0) {
+        std::vector<Ray> blocked, clear;
+        for (const Ray& r : shadow) (occluded(mesh, r, Interval{0, 1}) ? blocked : clear).push_back(r);
+        const auto lab_shadow = [&](const Ray& r) { return occluded(mesh, r, Interval{0, 1}); };
+        const auto embree_shadow = [&](const Ray& r) { return embree.occluded(r, 1.0f); };
+        count(input.name, "primary", "lab", primary, instructions, [&](const Ray& r) { return lab_primary(mesh, r); });
+        count(input.name, "primary", "Embree", primary, instructions,
+              [&](const Ray& r) { return std::isfinite(embree.hit(r, kFar)); });
+        count(input.name, "shadow, blocked", "lab", blocked, instructions, lab_shadow);
+        count(input.name, "shadow, blocked", "Embree", blocked, instructions, embree_shadow);
+        count(input.name, "shadow, clear", "lab", clear, instructions, lab_shadow);
+        count(input.name, "shadow, clear", "Embree", clear, instructions, embree_shadow);
+        return;
+    }
     if (classes) by_class(accel, list, mesh, embree, primary, rounds);
     std::printf("  %-22s %7s %12s %12s %7s\n", "rays", "threads", "lab Mrays/s", "Embree", "ratio");
     std::atomic<long> sink{0};
@@ -285,12 +391,64 @@ void measure(const Input& input, int size, int rounds, bool classes) {
             return accel.hit(list, r, Interval{}, rec);
         },
         embree_primary);
+
+    // The whole frame: a chapter program's render of the mesh shaded by its normals (one
+    // camera ray per pixel, and all that a pixel costs besides its search: the ray made in
+    // Real from the camera, the pixel's sampler, the HitRecord, the shading, the tiles, the
+    // image), against Embree casting the same camera's rays. Embree's are made beforehand,
+    // in the render's order (tiles of 16 x 16 pixels, handed out one at a time) and timed
+    // bare: what a user of Embree would still have to add is on the lab's side only.
+    if (frame <= 0) return;
+    const Scene scene = frame_scene(mesh, eye, centre);
+    RenderOptions options;
+    options.width = options.height = frame;
+    options.antialiasing = scene.antialiasing;
+    const View view = scene.camera.view(frame, frame);
+    constexpr int kTile = 16;  // render/render.cpp's
+    std::vector<Ray> camera;
+    camera.reserve(std::size_t(frame) * std::size_t(frame));
+    for (int y0 = 0; y0 < frame; y0 += kTile)
+        for (int x0 = 0; x0 < frame; x0 += kTile)
+            for (int y = y0; y < std::min(y0 + kTile, frame); ++y)
+                for (int i = x0; i < std::min(x0 + kTile, frame); ++i)
+                    camera.push_back(view.pixel_ray(i, frame - 1 - y));
+    // The same rays on both sides: as many pixels show the mesh as Embree's rays hit it.
+    options.threads = 1;
+    const Image image = render(scene, options).image;
+    long shown = 0, embree_hits = 0;
+    for (int y = 0; y < frame; ++y)
+        for (int x = 0; x < frame; ++x) shown += image.at(x, y) != scene.background;
+    for (const Ray& r : camera) embree_hits += embree_primary(r);
+    std::printf(
+        "  whole frame: %dx%d, \"shading\": \"normal\", 1 sample per pixel; %ld pixels show the mesh, "
+        "Embree hits it with %ld of the same rays\n",
+        frame, frame, shown, embree_hits);
+    for (int threads : {1, 2}) {
+        options.threads = threads;
+        double lab = 1e30, emb = 1e30;
+        for (int round = 0; round < rounds; ++round) {
+            const auto start = Clock::now();
+            sink += render(scene, options).image.width;
+            lab = std::min(lab, seconds_since(start));
+            emb = std::min(emb, timed(
+                                    threads, camera.size(),
+                                    [&](std::size_t b, std::size_t e) {
+                                        long n = 0;
+                                        for (std::size_t k = b; k < e; ++k) n += embree_primary(camera[k]);
+                                        sink += n;
+                                    },
+                                    kTile * kTile));
+        }
+        const double lab_m = double(camera.size()) / lab / 1e6, emb_m = double(camera.size()) / emb / 1e6;
+        std::printf("  %-22s %7d %12.2f %12.2f %7.2f\n", "whole frame", threads, lab_m, emb_m, lab_m / emb_m);
+        std::fflush(stdout);
+    }
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    int rounds = 5, size = 512;
+    int rounds = 5, size = 512, frame = 1024, instructions = 0;
     bool procedural = true, classes = false;
     std::string only;
     std::vector<Input> inputs;
@@ -301,6 +459,10 @@ int main(int argc, char** argv) {
                 rounds = std::max(1, std::atoi(argv[++i]));
             } else if (a == "--size" && i + 1 < argc) {
                 size = std::max(16, std::atoi(argv[++i]));
+            } else if (a == "--frame" && i + 1 < argc) {
+                frame = std::max(0, std::atoi(argv[++i]));
+            } else if (a == "--instructions" && i + 1 < argc) {
+                instructions = std::max(1, std::atoi(argv[++i]));
             } else if (a == "--only" && i + 1 < argc) {
                 only = argv[++i];
             } else if (a == "--by-class") {
@@ -311,7 +473,8 @@ int main(int argc, char** argv) {
                 inputs.push_back({a.substr(a.find_last_of('/') + 1), load_obj(a)});
             } else {
                 std::fprintf(stderr,
-                             "usage: bench_embree [--rounds N] [--size S] [--no-procedural] [--only TEXT] [--by-class] "
+                             "usage: bench_embree [--rounds N] [--size S] [--frame F] [--no-procedural] [--only TEXT] "
+                             "[--by-class] [--instructions N] "
                              "[MESH.obj ...]\n");
                 return 2;
             }
@@ -335,6 +498,6 @@ int main(int argc, char** argv) {
         "rtcIntersect1/rtcOccluded1\n",
         real_name(), RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH);
     for (const Input& in : inputs)
-        if (in.name.find(only) != std::string::npos) measure(in, size, rounds, classes);
+        if (in.name.find(only) != std::string::npos) measure(in, size, frame, rounds, classes, instructions);
     return 0;
 }

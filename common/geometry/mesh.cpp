@@ -162,11 +162,14 @@ bool occluded(const Mesh& mesh, const Ray& ray, Interval interval) {
     interval = in_registers(interval);
     MeshRay r(ray, mesh, interval);
     if (!r.wide) return false;
+    // The shear made now, not at the first leaf: a shadow ray leaves a surface, so it reaches
+    // at least the leaf of that surface, and made there, inside the search, the call cost the
+    // search's vector registers saved and restored around it.
+    const RayShear& shear = r.shear();
     return any_hit(
         a.wide, *r.wide, interval,
-        [&](std::uint32_t b, std::uint32_t, Interval& iv) {
-            return blocks_ray(a.blocks[b], a.corners_of(b), r.shear(), ray, iv);
-        },
+        [&](std::uint32_t b, std::uint32_t, Interval & iv)
+            __attribute__((always_inline)) { return blocks_ray(a.blocks[b], a.corners_of(b), shear, ray, iv); },
         [&](std::uint32_t b) { prefetch(a.blocks[b]); });
 }
 

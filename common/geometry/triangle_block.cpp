@@ -25,6 +25,12 @@ RayShear::RayShear(const Ray& ray, const Vec3& inv_direction) {
     origin_size = float_above(std::max({ao.x, ao.y, ao.z}));
 }
 
+[[gnu::noinline]] bool blocks_ray_exactly(unsigned lanes, const TriangleBlock& block,
+                                          const std::array<Vec3, 3>* corners, const Ray& ray, Interval interval) {
+    return exact_hits(lanes, block, corners, ray, interval,
+                      [](std::uint32_t, const TriangleHit&, const std::array<Vec3, 3>&) { return true; });
+}
+
 TriangleBlock pack(std::span<const std::uint32_t> triangles, const Vec3* positions,
                    const std::array<std::uint32_t, 3>* corners) {
     TriangleBlock block;
