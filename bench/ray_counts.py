@@ -8,6 +8,7 @@ Writes, into OUT_DIR (book/measured/):
   ch02-pick-middle.md    §2.5: what --pick prints for the middle pixel of a 201x151 image
   ch02-pick-default.md   §2.5: the t of --pick 200,150 at the default 400x300
   ch06-pick.md           §6.7: --pick of a floor pixel in both shadows, trimmed and rounded
+  ch13-lens-stripes.md   §13.8: the lens's stripes in pixels, in its middle and beside it
   ch05-skipping-*.md     §5.7: spheres and skipping, whole (dated), and the terms both evaluate
   ch07-depth-*.md        §7.3: mirrors' rays at each --depth, and what they add up to
   ch07-tinted-*.md       §7.7: tinted-sphere's --stats (dated), and its reflection rays
@@ -28,6 +29,7 @@ fails (exit 1) instead of writing a sentence the prose would contradict.
 import datetime
 import json
 import os
+import struct
 import subprocess
 import sys
 import tempfile
@@ -273,6 +275,39 @@ def ch06_pick(bin_dir, out_dir):
         "(`null`)."])
 
 
+def read_pfm(path):
+    """A PFM's width, height and rows of (r, g, b), top row first."""
+    with open(path, "rb") as f:
+        kind, size, scale, data = f.read().split(b"\n", 3)
+    need(kind == b"PF", f"{path} is a colour PFM")
+    w, h = map(int, size.split())
+    values = struct.unpack(("<" if float(scale) < 0 else ">") + f"{w * h * 3}f", data[:w * h * 12])
+    rows = [[values[3 * (y * w + x):3 * (y * w + x) + 3] for x in range(w)] for y in range(h)]
+    return w, h, rows[::-1]  # PFM stores the bottom row first
+
+
+def ch13_lens(bin_dir, out_dir):
+    """§13.8's magnifying glass: the stripes' widths in pixels along the row through the lens's
+    centre (the image's middle row: the camera looks at it), in the middle and beside the lens."""
+    with tempfile.TemporaryDirectory() as tmp:
+        image = os.path.join(tmp, "lens.pfm")
+        subprocess.run([os.path.join(bin_dir, "ch13"), "--scene", "lens", "-o", image], check=True, capture_output=True)
+        w, h, rows = read_pfm(image)
+    blue = [r[2] > r[0] + 0.1 for r in rows[h // 2]]  # the wall's blue stripes against its cream ones
+    runs, start = [], 0  # (first pixel, width) of each stripe
+    for x in range(1, w + 1):
+        if x == w or blue[x] != blue[start]:
+            runs.append((start, x - start))
+            start = x
+    middle = next(width for first, width in runs if first <= w // 2 < first + width)
+    beside = sorted({width for _, width in runs[1:6] + runs[-6:-1]})  # whole stripes at both ends, off the lens
+    need(len(beside) <= 2 and beside[-1] - beside[0] <= 1, "the stripes beside the lens are all one width, give or take a pixel")
+    need(1.6 < middle / (sum(beside) / len(beside)) < 2.2, "the stripes through the middle look about 1.9 times as wide")
+    write(out_dir, "ch13-lens-stripes.md",
+          [f"The stripes through the middle of the lens should look about 1.9 times as wide as those beside it, and "
+           f"at {w} × {h} they are {middle} pixels wide against {' or '.join(map(str, beside))}."])
+
+
 def ch17(bin_dir, out_dir):
     ch17 = os.path.join(bin_dir, "ch17")
     g, _ = stats(ch17, "grazing")
@@ -343,6 +378,7 @@ def main():
     ch09(bin_dir, out_dir, stamp)
     ch06(bin_dir, out_dir, stamp)
     ch06_pick(bin_dir, out_dir)
+    ch13_lens(bin_dir, out_dir)
     ch17(bin_dir, out_dir)
     ch18(bin_dir, out_dir)
 
