@@ -149,7 +149,8 @@ def main():
     worst = max(r[1] for r in scenes)
     worst_scenes = ", ".join(s.split()[1] for s, fail, *_ in scenes if fail == worst)
     write("ch14-choices-current.md",
-          [f"| t-test | 1,024 renders | {failed} of {groups:,} | {worst} of {scenes[0][2]} ({worst_scenes}) |"])
+          [f"| t-test | 1,024 renders | {failed} of {groups:,} | "
+           f"{f'{worst} of {scenes[0][2]} ({worst_scenes})' if worst else 'none'} |"])
 
     rows = ["| mistake | program, scene | values failing | smallest p |", "|---|---|---|---|"]
     for name, fail, _, least, _ in planted:
