@@ -134,7 +134,8 @@ def main():
     level = sidak_level(alpha, planted[0][2])  # the pixel-channels tested, as the planted rows count them
     table = ["| scene | groups failing | smallest p | its family p | family p < 0.1 |", "|---|---|---|---|---|"]
     for scene, fail, g, least, family, low in scenes:
-        table.append(f"| {scene} | {fail} of {g} | {p(least, 2 if level / 2 < least < 2 * level else 1)} | {family:.2g} | "
+        digits = 2 if level / 2 < least < 2 * level else 1  # enough to compare with the level
+        table.append(f"| {scene} | {fail} of {g} | {p(least, digits)} | {family:.2g} | "
                      f"{low} of {g} |")
     write("ch14-false-alarms.md", table + [
         "",
@@ -160,8 +161,8 @@ def main():
     margin = f"{level / closest[3]:.0e}".split("e")
     write("ch14-planted.md", rows + [
         "",
-        f"The closest, {MISTAKES[closest[0]][2]}, fails at a p-value ${margin[0]} \\times 10^{{{int(margin[1])}}}$ times smaller than the level. In the "
-        "float build every one fails too."])
+        f"The closest, {MISTAKES[closest[0]][2]}, fails at a p-value ${margin[0]} \\times 10^{{{int(margin[1])}}}$ "
+        "times smaller than the level. In the float build every one fails too."])
 
 
 main()

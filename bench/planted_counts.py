@@ -68,8 +68,8 @@ def verdict(bin_dir, program, chapter, scene, seeds, extra=()):
         images = []
         for s in seeds:
             image = os.path.join(tmp, f"{scene}-{s}.pfm")
-            subprocess.run([os.path.join(bin_dir, program), "--scene", scene, *SIZE, "--seed", str(s), *extra, "-o", image],
-                           check=True, capture_output=True)
+            subprocess.run([os.path.join(bin_dir, program), "--scene", scene, *SIZE, "--seed", str(s), *extra,
+                            "-o", image], check=True, capture_output=True)
             images.append(image)
         ref = f"tests/golden/ch{chapter}/{scene}"
         js = os.path.join(tmp, "v.json")
@@ -293,10 +293,10 @@ def main():
         failed = sum(not v["pass"] for v in alarms)
         need(failed <= 1, f"stat_false_alarms_ch{chapter}_{scenes[0]} passes: at most one group of 20 fails")
         write(f"ch{chapter}-false-alarms.md",
-              [f"**False alarms.** `stat_false_alarms_ch{chapter}_{scenes[0]}` tests 20 more groups of 8 correct renders, seeds "
-               f"5000 to {5000 + 20 * len(SEEDS) - 1}, and passes when at most one group fails (§14.6). In the "
-               f"{REAL} build {'no group fails' if failed == 0 else 'one group fails'}; the smallest p of the 20 is "
-               f"{p(min(v['smallest_p'] for v in alarms))}."])
+              [f"**False alarms.** `stat_false_alarms_ch{chapter}_{scenes[0]}` tests 20 more groups of 8 correct "
+               f"renders, seeds 5000 to {5000 + 20 * len(SEEDS) - 1}, and passes when at most one group fails "
+               f"(§14.6). In the {REAL} build {'no group fails' if failed == 0 else 'one group fails'}; the smallest "
+               f"p of the 20 is {p(min(v['smallest_p'] for v in alarms))}."])
         wrong = verdict(bin_dir, f"planted_{planted}", chapter, scenes[0], SEEDS)
         need(not wrong["pass"], f"planted_{planted} fails on {scenes[0]}")
         write(f"ch{chapter}-planted.md",

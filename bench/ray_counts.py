@@ -241,7 +241,8 @@ def ch06_pick(bin_dir, out_dir):
     need(point["blocked"] and point["blocker"]["surface"] == "red ball" and sun["blocked"]
          and sun["blocker"]["surface"] == "blue ball" and "triangle" in sun["blocker"],
          "the red ball blocks the point light and a triangle of the blue ball the sun")
-    need(point["interval"][1] is not None and sun["interval"][1] is None, "the point light's ray ends, the sun's does not")
+    need(point["interval"][1] is not None and sun["interval"][1] is None,
+         "the point light's ray ends, the sun's does not")
     need(all(abs(c - d * a) < 1e-6 for c, d, a in zip(pick["color"], (0.8, 0.78, 0.72), (0.12, 0.12, 0.15))),
          "the colour is the floor's diffuse colour (0.8, 0.78, 0.72) times the ambient (0.12, 0.12, 0.15)")
     p, o = pick["point"], point["origin"]
@@ -256,11 +257,13 @@ def ch06_pick(bin_dir, out_dir):
 
     lines = ["```text", "$ build/release/bin/ch06 " + " ".join(command),
              f'{{"color": {v(pick["color"])}, "surface": "floor", "point": {v(p)}, ...',
-             f' "tree": {{"kind": "camera", "depth": 0, "hit": {{"surface": "floor", "t": {tree["hit"]["t"]:.4f}, ...}},',
+             f' "tree": {{"kind": "camera", "depth": 0, "hit": {{"surface": "floor", '
+             f'"t": {tree["hit"]["t"]:.4f}, ...}},',
              '  "children": [']
     for c, last in ((point, False), (sun, True)):
         end = "" if c["interval"][1] is None else f'{c["interval"][1]:.4f}'
-        lines.append(f'   {{"kind": "shadow", "light": {c["light"]}, "blocked": true, "interval": [0, {end or "null"}],')
+        lines.append(f'   {{"kind": "shadow", "light": {c["light"]}, "blocked": true, '
+                     f'"interval": [0, {end or "null"}],')
         if not last:
             lines.append(f'    "origin": [{", ".join(repr(x) for x in c["origin"])}],')
         b = c["blocker"]
@@ -301,8 +304,10 @@ def ch13_lens(bin_dir, out_dir):
             start = x
     middle = next(width for first, width in runs if first <= w // 2 < first + width)
     beside = sorted({width for _, width in runs[1:6] + runs[-6:-1]})  # whole stripes at both ends, off the lens
-    need(len(beside) <= 2 and beside[-1] - beside[0] <= 1, "the stripes beside the lens are all one width, give or take a pixel")
-    need(1.6 < middle / (sum(beside) / len(beside)) < 2.2, "the stripes through the middle look about 1.9 times as wide")
+    need(len(beside) <= 2 and beside[-1] - beside[0] <= 1,
+         "the stripes beside the lens are all one width, give or take a pixel")
+    need(1.6 < middle / (sum(beside) / len(beside)) < 2.2,
+         "the stripes through the middle look about 1.9 times as wide")
     write(out_dir, "ch13-lens-stripes.md",
           [f"The stripes through the middle of the lens should look about 1.9 times as wide as those beside it, and "
            f"at {w} × {h} they are {middle} pixels wide against {' or '.join(map(str, beside))}."])
