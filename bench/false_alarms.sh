@@ -18,7 +18,8 @@
 # DIR (default build/check) needs rtlab-stat, ch14-ch18 and planted_*: cmake --build --preset
 # check --target rtlab-stat ch14 ch15 ch16 ch17 ch18 and the planted_ targets of tests/CMakeLists.txt.
 # The book's tables (§14.6) are the default, 200 groups: 16,000 renders, about 5 minutes on
-# 2 cores.
+# 2 cores. ./lab bench false-alarms runs this in the release and the float build and writes
+# the tables with bench/false_alarms_tables.py.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 cd "$root"

@@ -7,6 +7,8 @@ Writes, into OUT_DIR (book/measured/):
 
   ch02-pick-middle.md    §2.5: what --pick prints for the middle pixel of a 201x151 image
   ch02-pick-default.md   §2.5: the t of --pick 200,150 at the default 400x300
+  ch06-pick.md           §6.7: --pick of a floor pixel in both shadows, trimmed and rounded
+  ch13-lens-stripes.md   §13.8: the lens's stripes in pixels, in its middle and beside it
   ch05-skipping-*.md     §5.7: spheres and skipping, whole (dated), and the terms both evaluate
   ch07-depth-*.md        §7.3: mirrors' rays at each --depth, and what they add up to
   ch07-tinted-*.md       §7.7: tinted-sphere's --stats (dated), and its reflection rays
@@ -27,6 +29,7 @@ fails (exit 1) instead of writing a sentence the prose would contradict.
 import datetime
 import json
 import os
+import struct
 import subprocess
 import sys
 import tempfile
@@ -225,6 +228,91 @@ def ch06(bin_dir, out_dir, stamp):
            f"terms, and the built-in `acne` {n(a['rays']['shadow'])} for {n(a['shading']['light_terms'])}."])
 
 
+def ch06_pick(bin_dir, out_dir):
+    """§6.7's --pick of a floor pixel in both shadows, trimmed (the fields the prose reads) and
+    rounded, with the facts the prose draws from it checked."""
+    command = ["--scene", "shadows", "--pick", "200,178"]
+    pick = json.loads(run(os.path.join(bin_dir, "ch06"), *command))
+    tree = pick["tree"]
+    point, sun = tree["children"]
+    need(pick["surface"] == "floor" and tree["hit"]["surface"] == "floor", "pixel 200,178 of shadows is on the floor")
+    need([c["kind"] for c in tree["children"]] == ["shadow", "shadow"] and point["light"] == 0 and sun["light"] == 1,
+         "the pixel casts one shadow ray to each light, the point light first")
+    need(point["blocked"] and point["blocker"]["surface"] == "red ball" and sun["blocked"]
+         and sun["blocker"]["surface"] == "blue ball" and "triangle" in sun["blocker"],
+         "the red ball blocks the point light and a triangle of the blue ball the sun")
+    need(point["interval"][1] is not None and sun["interval"][1] is None,
+         "the point light's ray ends, the sun's does not")
+    need(all(abs(c - d * a) < 1e-6 for c, d, a in zip(pick["color"], (0.8, 0.78, 0.72), (0.12, 0.12, 0.15))),
+         "the colour is the floor's diffuse colour (0.8, 0.78, 0.72) times the ambient (0.12, 0.12, 0.15)")
+    p, o = pick["point"], point["origin"]
+    need(p[1] == 0 and o[1] == 2.0 ** -40 and o[0] == p[0] and o[2] == p[2],
+         "the floor point has y = 0 and its shadow rays start 2^-40 above it, x and z unmoved")
+
+    def r(x, digits=3):  # a number as the trimmed transcript rounds it
+        return "null" if x is None else f"{x:.{digits}g}"
+
+    def v(xs, digits=3):
+        return "[" + ", ".join(r(x, digits) for x in xs) + "]"
+
+    lines = ["```text", "$ build/release/bin/ch06 " + " ".join(command),
+             f'{{"color": {v(pick["color"])}, "surface": "floor", "point": {v(p)}, ...',
+             f' "tree": {{"kind": "camera", "depth": 0, "hit": {{"surface": "floor", '
+             f'"t": {tree["hit"]["t"]:.4f}, ...}},',
+             '  "children": [']
+    for c, last in ((point, False), (sun, True)):
+        end = "" if c["interval"][1] is None else f'{c["interval"][1]:.4f}'
+        lines.append(f'   {{"kind": "shadow", "light": {c["light"]}, "blocked": true, '
+                     f'"interval": [0, {end or "null"}],')
+        if not last:
+            lines.append(f'    "origin": [{", ".join(repr(x) for x in c["origin"])}],')
+        b = c["blocker"]
+        triangle = f', "triangle": {b["triangle"]}' if "triangle" in b else ""
+        lines.append(f'    "blocker": {{"surface": "{b["surface"]}", "t": {b["t"]:.4f}{triangle}, ...}},')
+        lines.append(f'    "weight": {{"of": "{c["weight"]["of"]}", "value": {v(c["weight"]["value"], 2)}}}, '
+                     f'"radiance": {v(c["radiance"])}}}{"]}}" if last else ","}')
+    lines.append("```")
+    write(out_dir, "ch06-pick.md", lines + [
+        "",
+        f"The point light's ray ends at the light, {point['interval'][1]:.2f} away, and the sun's ray has no end "
+        "(`null`)."])
+
+
+def read_pfm(path):
+    """A PFM's width, height and rows of (r, g, b), top row first."""
+    with open(path, "rb") as f:
+        kind, size, scale, data = f.read().split(b"\n", 3)
+    need(kind == b"PF", f"{path} is a colour PFM")
+    w, h = map(int, size.split())
+    values = struct.unpack(("<" if float(scale) < 0 else ">") + f"{w * h * 3}f", data[:w * h * 12])
+    rows = [[values[3 * (y * w + x):3 * (y * w + x) + 3] for x in range(w)] for y in range(h)]
+    return w, h, rows[::-1]  # PFM stores the bottom row first
+
+
+def ch13_lens(bin_dir, out_dir):
+    """§13.8's magnifying glass: the stripes' widths in pixels along the row through the lens's
+    centre (the image's middle row: the camera looks at it), in the middle and beside the lens."""
+    with tempfile.TemporaryDirectory() as tmp:
+        image = os.path.join(tmp, "lens.pfm")
+        subprocess.run([os.path.join(bin_dir, "ch13"), "--scene", "lens", "-o", image], check=True, capture_output=True)
+        w, h, rows = read_pfm(image)
+    blue = [r[2] > r[0] + 0.1 for r in rows[h // 2]]  # the wall's blue stripes against its cream ones
+    runs, start = [], 0  # (first pixel, width) of each stripe
+    for x in range(1, w + 1):
+        if x == w or blue[x] != blue[start]:
+            runs.append((start, x - start))
+            start = x
+    middle = next(width for first, width in runs if first <= w // 2 < first + width)
+    beside = sorted({width for _, width in runs[1:6] + runs[-6:-1]})  # whole stripes at both ends, off the lens
+    need(len(beside) <= 2 and beside[-1] - beside[0] <= 1,
+         "the stripes beside the lens are all one width, give or take a pixel")
+    need(1.6 < middle / (sum(beside) / len(beside)) < 2.2,
+         "the stripes through the middle look about 1.9 times as wide")
+    write(out_dir, "ch13-lens-stripes.md",
+          [f"The stripes through the middle of the lens should look about 1.9 times as wide as those beside it, and "
+           f"at {w} × {h} they are {middle} pixels wide against {' or '.join(map(str, beside))}."])
+
+
 def ch17(bin_dir, out_dir):
     ch17 = os.path.join(bin_dir, "ch17")
     g, _ = stats(ch17, "grazing")
@@ -294,6 +382,8 @@ def main():
     ch08(bin_dir, out_dir, stamp)
     ch09(bin_dir, out_dir, stamp)
     ch06(bin_dir, out_dir, stamp)
+    ch06_pick(bin_dir, out_dir)
+    ch13_lens(bin_dir, out_dir)
     ch17(bin_dir, out_dir)
     ch18(bin_dir, out_dir)
 
