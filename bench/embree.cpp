@@ -242,22 +242,46 @@ Scene frame_scene(const Mesh& mesh, const Vec3& eye, const Vec3& centre) {
 // ("INPUT: KIND, SIDE, N x RAYS rays"): run under valgrind --tool=callgrind
 // --instr-atstart=no, each dump holds the instructions of those casts and nothing else
 // (bench/embree_instructions.sh divides them by the rays).
-template <class Cast>
-void count(const std::string& input, const char* kind, const char* side, const std::vector<Ray>& rays, int repeats,
-           Cast&& cast) {
-    if (rays.empty()) return;
+template <class Batch>
+void count_batch(const std::string& input, const char* kind, const char* side, std::size_t rays, int repeats,
+                 Batch&& batch) {
+    if (rays == 0) return;
     long n = 0;
     traversal_tally = {};
     CALLGRIND_START_INSTRUMENTATION;
-    for (int k = 0; k < repeats; ++k)
-        for (const Ray& r : rays) n += cast(r);
+    for (int k = 0; k < repeats; ++k) n += batch();
     CALLGRIND_STOP_INSTRUMENTATION;
-    const std::string name = input + ": " + kind + ", " + side + ", " + std::to_string(repeats) + " x " +
-                             std::to_string(rays.size()) + " rays";
+    const std::string name =
+        input + ": " + kind + ", " + side + ", " + std::to_string(repeats) + " x " + std::to_string(rays) + " rays";
     CALLGRIND_DUMP_STATS_AT(name.c_str());
-    const double casts = double(repeats) * double(rays.size());
+    const double casts = double(repeats) * double(rays);
     std::printf("  counted %s (%ld answered yes; the lab's tally per ray: %.1f boxes, %.1f triangles)\n", name.c_str(),
                 n, double(traversal_tally.nodes) / casts, double(traversal_tally.items) / casts);
+}
+
+template <class Cast>
+void count(const std::string& input, const char* kind, const char* side, const std::vector<Ray>& rays, int repeats,
+           Cast&& cast) {
+    count_batch(input, kind, side, rays.size(), repeats, [&] {
+        long n = 0;
+        for (const Ray& r : rays) n += cast(r);
+        return n;
+    });
+}
+
+// The camera rays of an F x F frame, in the order render/render.cpp casts them (tiles of
+// 16 x 16 pixels, rows within a tile), so that Embree's side meets the same memory order.
+constexpr int kTile = 16;  // render/render.cpp's
+std::vector<Ray> frame_rays(const Scene& scene, int frame) {
+    const View view = scene.camera.view(frame, frame);
+    std::vector<Ray> camera;
+    camera.reserve(std::size_t(frame) * std::size_t(frame));
+    for (int y0 = 0; y0 < frame; y0 += kTile)
+        for (int x0 = 0; x0 < frame; x0 += kTile)
+            for (int y = y0; y < std::min(y0 + kTile, frame); ++y)
+                for (int i = x0; i < std::min(x0 + kTile, frame); ++i)
+                    camera.push_back(view.pixel_ray(i, frame - 1 - y));
+    return camera;
 }
 
 void measure(const Input& input, int size, int frame, int rounds, bool classes, int instructions) {
@@ -342,6 +366,19 @@ void measure(const Input& input, int size, int frame, int rounds, bool classes, 
         count(input.name, "shadow, blocked", "Embree", blocked, instructions, embree_shadow);
         count(input.name, "shadow, clear", "lab", clear, instructions, lab_shadow);
         count(input.name, "shadow, clear", "Embree", clear, instructions, embree_shadow);
+        if (frame > 0) {
+            // A whole render on one thread: everything a camera ray costs, search and all.
+            const Scene scene = frame_scene(mesh, eye, centre);
+            RenderOptions options;
+            options.width = options.height = frame;
+            options.antialiasing = scene.antialiasing;
+            options.threads = 1;
+            const std::vector<Ray> camera = frame_rays(scene, frame);
+            count_batch(input.name, "whole frame", "lab", camera.size(), instructions,
+                        [&] { return long(render(scene, options).image.width); });
+            count(input.name, "whole frame", "Embree", camera, instructions,
+                  [&](const Ray& r) { return std::isfinite(embree.hit(r, kFar)); });
+        }
         return;
     }
     if (classes) by_class(accel, list, mesh, embree, primary, rounds);
@@ -403,15 +440,7 @@ void measure(const Input& input, int size, int frame, int rounds, bool classes, 
     RenderOptions options;
     options.width = options.height = frame;
     options.antialiasing = scene.antialiasing;
-    const View view = scene.camera.view(frame, frame);
-    constexpr int kTile = 16;  // render/render.cpp's
-    std::vector<Ray> camera;
-    camera.reserve(std::size_t(frame) * std::size_t(frame));
-    for (int y0 = 0; y0 < frame; y0 += kTile)
-        for (int x0 = 0; x0 < frame; x0 += kTile)
-            for (int y = y0; y < std::min(y0 + kTile, frame); ++y)
-                for (int i = x0; i < std::min(x0 + kTile, frame); ++i)
-                    camera.push_back(view.pixel_ray(i, frame - 1 - y));
+    const std::vector<Ray> camera = frame_rays(scene, frame);
     // The same rays on both sides: as many pixels show the mesh as Embree's rays hit it.
     options.threads = 1;
     const Image image = render(scene, options).image;
