@@ -33,8 +33,17 @@ void fisher_yates(std::vector<std::uint32_t>& order, pcg32& random);
 
 class Sampler {
 public:
-    Sampler(std::uint64_t seed, std::uint64_t pixel_index) {
-        for (std::size_t d = 0; d < kDimensions; ++d) streams_[d] = pcg32(seed, pixel_index * kDimensions + d);
+    Sampler(std::uint64_t seed, std::uint64_t pixel_index) : seed_(seed) { start_pixel(pixel_index); }
+
+    // Moves to another pixel: its numbers are the same as a new Sampler(seed, pixel_index)
+    // would give. A stream is seeded at its dimension's first draw, not here: a camera ray
+    // through the pixel's centre draws nothing, and seeding all six streams of every pixel
+    // cost more than the rest of the pixel's set-up together. One sampler serves a whole
+    // tile, so the strata orders keep their memory from pixel to pixel.
+    void start_pixel(std::uint64_t pixel_index) {
+        pixel_ = pixel_index;
+        seeded_ = 0;
+        ordered_ = 0;
     }
 
     // This pixel takes `count` samples, each dimension divided into `count` strata (a line)
@@ -43,6 +52,7 @@ public:
         count_ = count;
         side_ = side;
         strata_ = side > 0 || strata == Strata::none ? strata : Strata::none;
+        ordered_ = 0;
     }
     int count() const { return count_; }
     int side() const { return side_; }
@@ -51,14 +61,14 @@ public:
     // Starts sample `index` of this pixel's samples (0, 1, ..., count - 1).
     void start_sample(int index) {
         sample_ = index;
-        used_ = {};
+        used_ = 0;
     }
     int sample_index() const { return sample_; }
 
     // Uniform in [0, 1), from dimension d's own stream.
     Real get1(Dimension d) {
         ++draws_[std::size_t(d)];
-        return to_unit(streams_[std::size_t(d)]);
+        return to_unit(stream(d));
     }
     Vec2 get2(Dimension d) {
         const Real a = get1(d);
@@ -71,10 +81,10 @@ public:
     int stratum(Dimension d) {
         if (d == Dimension::pixel) return sample_;
         std::vector<std::uint32_t>& order = orders_[std::size_t(d)];
-        if (order.empty()) {
+        if (!take(ordered_, d)) {
             order.resize(std::size_t(count_));
             std::iota(order.begin(), order.end(), 0u);
-            fisher_yates(order, streams_[std::size_t(d)]);
+            fisher_yates(order, stream(d));
         }
         return int(order[std::size_t(sample_)]);
     }
@@ -83,16 +93,26 @@ public:
     // false after: only that one takes the sample's stratum. A second request in the same
     // sample (a second glossy bounce, a second area light) that took the same stratum would
     // be tied to the first, and where the two multiply along a path the average is biased.
-    bool take_stratum(Dimension d) {
-        const bool first = !used_[std::size_t(d)];
-        used_[std::size_t(d)] = true;
-        return strata_ != Strata::none && first;
-    }
+    bool take_stratum(Dimension d) { return !take(used_, d) && strata_ != Strata::none; }
 
-    // How many numbers each dimension has drawn (--stats: what a scene's effects cost).
+    // How many numbers each dimension has drawn since this sampler was made, over every
+    // pixel it served (--stats: what a scene's effects cost).
     const std::array<std::uint64_t, kDimensions>& draws() const { return draws_; }
 
 private:
+    // Sets dimension d's bit in `bits` and says whether it was set already.
+    static bool take(std::uint8_t& bits, Dimension d) {
+        const auto bit = std::uint8_t(1u << unsigned(d));
+        const bool was = bits & bit;
+        bits |= bit;
+        return was;
+    }
+    // Each (seed, pixel, dimension) owns its own PCG stream.
+    pcg32& stream(Dimension d) {
+        const auto k = std::size_t(d);
+        if (!take(seeded_, d)) streams_[k] = pcg32(seed_, pixel_ * kDimensions + k);
+        return streams_[k];
+    }
     static Real to_unit(pcg32& rng) {
         // 24 (or 53) random bits: exactly representable, never rounds up to 1.
         if constexpr (sizeof(Real) == sizeof(float))
@@ -106,10 +126,15 @@ private:
         }
     }
 
+    static_assert(kDimensions <= 8, "one bit per dimension in seeded_, ordered_ and used_");
+    std::uint64_t seed_;
+    std::uint64_t pixel_ = 0;
     std::array<pcg32, kDimensions> streams_;
     std::array<std::vector<std::uint32_t>, kDimensions> orders_;
     std::array<std::uint64_t, kDimensions> draws_{};
-    std::array<bool, kDimensions> used_{};  // a stratified point taken in this sample
+    std::uint8_t seeded_ = 0;   // the dimensions whose stream this pixel has seeded
+    std::uint8_t ordered_ = 0;  // the dimensions whose strata order this pixel has shuffled
+    std::uint8_t used_ = 0;     // a stratified point taken in this sample
     int sample_ = 0;
     int count_ = 1;
     int side_ = 1;

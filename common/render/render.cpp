@@ -131,11 +131,12 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
         traversal_tally = {};  // a tile runs on one thread: what the searches count is this tile's
         const int x0 = (tile % tiles_x) * kTile, y0 = (tile / tiles_x) * kTile;
         const int x1 = std::min(x0 + kTile, o.width), y1 = std::min(y0 + kTile, o.height);
+        Sampler sampler(o.seed, 0);  // one for the tile, moved from pixel to pixel
+        sampler.set_strata(o.spp, side, strata);
         for (int y = y0; y < y1; ++y) {
             const int j = o.height - 1 - y;  // image rows go down, v goes up
             for (int i = x0; i < x1; ++i) {
-                Sampler sampler(o.seed, std::uint64_t(y) * std::uint64_t(o.width) + std::uint64_t(i));
-                sampler.set_strata(o.spp, side, strata);
+                sampler.start_pixel(std::uint64_t(y) * std::uint64_t(o.width) + std::uint64_t(i));
                 // Summed in double: a float sum of 65536 samples loses 7e-4 of each (the sum's
                 // step outgrows the samples); in double, n <= 2^16 floats add exactly, so the
                 // average of identical samples is that sample.
@@ -157,9 +158,9 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
                         ++counters.nonfinite_samples;
                 }
                 result.image.at(i, y) = Color(sum / double(count));
-                for (std::size_t d = 0; d < kDimensions; ++d) counters.draws[d] += sampler.draws()[d];
             }
         }
+        for (std::size_t d = 0; d < kDimensions; ++d) counters.draws[d] += sampler.draws()[d];
         counters.nodes_visited += traversal_tally.nodes;
         counters.primitives_tested += traversal_tally.items;
         {
