@@ -23,7 +23,8 @@
 //      RTLAB_FIGURES_MIN in tests/figures.cmake to the new count). Look at it:
 //      rsvg-convert -o /tmp/fig.png out/chNN/figures/FIG.svg (librsvg2-bin).
 // Shared helpers (kinds.hpp, svg.hpp): flat() puts a point of the plane z = 0 on the page,
-// View3 draws 3D from a chosen direction, number() and degrees_between() write labels.
+// View3 draws 3D from a chosen direction, number() and degrees_between() write labels,
+// spheres_of() reads the circles a structure is built over.
 #include "kinds.hpp"
 
 #include <CLI/CLI.hpp>
@@ -56,6 +57,15 @@ std::string number(double v, int digits) {
 double degrees_between(const rt::Vec3& a, const rt::Vec3& b) {
     const double c = double(glm::dot(rt::unit_vector(a), rt::unit_vector(b)));
     return std::acos(std::clamp(c, -1.0, 1.0)) * 180 / M_PI;
+}
+
+std::vector<rt::Sphere> spheres_of(const rt::Fields& in) {
+    std::vector<rt::Sphere> spheres;
+    for (const rt::Fields& s : in.objects("spheres")) {
+        spheres.emplace_back(s.vec3("center"), s.length("radius"));
+        s.done();
+    }
+    return spheres;
 }
 
 }  // namespace figures

@@ -1,9 +1,12 @@
 #pragma once
 // The kinds of figure a description may name, each drawn by one function in its own file
 // (NAME.cpp beside this one). Adding a kind: write that file, add its line here.
+#include "geometry/sphere.hpp"
 #include "io/json_reader.hpp"
 #include "render/camera.hpp"
 #include "svg.hpp"
+
+#include <vector>
 
 // X(name in the description's "kind", function)
 #define RTLAB_FIGURE_KINDS(X)                                 \
@@ -44,6 +47,9 @@ RTLAB_FIGURE_KINDS(RTLAB_FIGURE_DECLARE)
 std::string number(double v, int digits = 3);
 // The angle between two directions, in degrees, for a label.
 double degrees_between(const rt::Vec3& a, const rt::Vec3& b);
+// The description's "spheres", each {"center", "radius"}: the circles a flat figure's
+// structures (a BVH, a grid, a BSP tree) are built over.
+std::vector<rt::Sphere> spheres_of(const rt::Fields& in);
 
 // An orthographic view of a 3D figure, seen from the direction `toward_viewer` with `up`
 // up the page: the page's axes are the frame the library's camera_basis (exercise 1.1)
