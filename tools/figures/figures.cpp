@@ -24,8 +24,10 @@
 //      rsvg-convert -o /tmp/fig.png out/chNN/figures/FIG.svg (librsvg2-bin).
 // Shared helpers (kinds.hpp, svg.hpp): flat() puts a point of the plane z = 0 on the page,
 // View3 draws 3D from a chosen direction, number() and degrees_between() write labels,
-// spheres_of() reads the circles a structure is built over.
+// spheres_of() reads the circles a structure is built over, pixel_samples_of() one pixel's
+// samples.
 #include "kinds.hpp"
+#include "render/antialiasing.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -66,6 +68,15 @@ std::vector<rt::Sphere> spheres_of(const rt::Fields& in) {
         s.done();
     }
     return spheres;
+}
+
+PixelSamples pixel_samples_of(const rt::Fields& in, int most) {
+    const int count = in.integer("samples", {"samples", 1, double(most), "", ""});
+    const auto side = rt::pattern_side(count);
+    if (!side) in.fail("samples", "must be a square number (4, 9, 16, ...)");
+    const auto seed = std::uint64_t(in.integer("seed", {"seed", 0, 1 << 30, "", ""}));
+    const auto pixel = std::uint64_t(in.integer("pixel", {"pixel", 0, 1 << 30, "", ""}));
+    return {count, *side, seed, pixel};
 }
 
 }  // namespace figures

@@ -6,6 +6,7 @@
 #include "render/camera.hpp"
 #include "svg.hpp"
 
+#include <cstdint>
 #include <vector>
 
 // X(name in the description's "kind", function)
@@ -50,6 +51,13 @@ double degrees_between(const rt::Vec3& a, const rt::Vec3& b);
 // The description's "spheres", each {"center", "radius"}: the circles a flat figure's
 // structures (a BVH, a grid, a BSP tree) are built over.
 std::vector<rt::Sphere> spheres_of(const rt::Fields& in);
+// One pixel's samples, as the render loop sets its Sampler up for them: the description's
+// "samples" (a square number, at most `most`: the strata are side x side), "seed" and "pixel".
+struct PixelSamples {
+    int count, side;
+    std::uint64_t seed, pixel;
+};
+PixelSamples pixel_samples_of(const rt::Fields& in, int most = 256);
 
 // An orthographic view of a 3D figure, seen from the direction `toward_viewer` with `up`
 // up the page: the page's axes are the frame the library's camera_basis (exercise 1.1)
