@@ -25,7 +25,7 @@
 // Shared helpers (kinds.hpp, svg.hpp): flat() puts a point of the plane z = 0 on the page,
 // View3 draws 3D from a chosen direction, number() and degrees_between() write labels,
 // spheres_of() reads the circles a structure is built over, pixel_samples_of() one pixel's
-// samples.
+// samples, ray_of() the one ray a figure follows.
 #include "kinds.hpp"
 #include "render/antialiasing.hpp"
 
@@ -77,6 +77,14 @@ PixelSamples pixel_samples_of(const rt::Fields& in, int most) {
     const auto seed = std::uint64_t(in.integer("seed", {"seed", 0, 1 << 30, "", ""}));
     const auto pixel = std::uint64_t(in.integer("pixel", {"pixel", 0, 1 << 30, "", ""}));
     return {count, *side, seed, pixel};
+}
+
+DrawnRay ray_of(const rt::Fields& in) {
+    const rt::Fields r = in.object("ray");
+    const rt::Ray ray{r.vec3("origin"), r.direction("direction")};
+    const rt::Real t_end = r.length("t_end");
+    r.done();
+    return {ray, t_end};
 }
 
 }  // namespace figures

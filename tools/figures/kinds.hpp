@@ -58,6 +58,13 @@ struct PixelSamples {
     std::uint64_t seed, pixel;
 };
 PixelSamples pixel_samples_of(const rt::Fields& in, int most = 256);
+// The description's one "ray", {"origin", "direction", "t_end"}: the ray, and how far along it
+// the figure draws it.
+struct DrawnRay {
+    rt::Ray ray;
+    rt::Real t_end;
+};
+DrawnRay ray_of(const rt::Fields& in);
 
 // An orthographic view of a 3D figure, seen from the direction `toward_viewer` with `up`
 // up the page: the page's axes are the frame the library's camera_basis (exercise 1.1)

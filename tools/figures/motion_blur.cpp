@@ -21,10 +21,7 @@ Canvas motion_blur(const rt::Fields& in) {
     const std::vector<rt::Real> shutter = in.numbers("shutter", 2, rt::limits::shutter);
     if (!(shutter[0] < shutter[1])) in.fail("shutter", "must open before it closes");
     const auto [count, side, seed, pixel] = pixel_samples_of(in);
-    const rt::Fields rf = in.object("ray");
-    rt::Ray ray{rf.vec3("origin"), rf.direction("direction")};
-    const rt::Real t_end = rf.length("t_end");
-    rf.done();
+    auto [ray, t_end] = ray_of(in);
 
     Canvas c;
     const rt::Box swept = rt::bounding_box(ball);
