@@ -16,6 +16,8 @@ import math
 import re
 import sys
 
+from measured import n
+
 COURSE_BVHS = ["bvh-sort", "bvh-midpoint", "bvh-sah"]
 BVH_BUILDS = COURSE_BVHS + ["fast"]
 INPUTS = ["terrain", "soup", "stadium"]
@@ -39,10 +41,6 @@ def load(text_path):
     if not rows or not slopes:
         sys.exit(f"complexity_summary.py: no rows or no slopes in {text_path}")
     return rows, slopes
-
-
-def n(value):
-    return f"{value:,}"
 
 
 def span(values, digits=2):

@@ -18,8 +18,9 @@ a run that breaks either fails here (exit 1) instead of writing what the prose c
 """
 
 import math
-import os
 import sys
+
+from measured import need, write
 
 GROUPS = 200  # per scene, as §14.6's prose says (a run with fewer writes nothing)
 
@@ -35,11 +36,6 @@ MISTAKES = {
     "twice_as_wide": ("glossy width doubled (§17.1)", "`planted_twice_as_wide`, `plates`", "the doubled width"),
     "unstratified": ("time not stratified (§18.2)", "`planted_unstratified`, `balls`", "the unstratified time"),
 }
-
-
-def need(condition, what):
-    if not condition:
-        sys.exit(f"false_alarms_tables.py: the book's prose no longer holds: {what}")
 
 
 def parse(path):
@@ -124,11 +120,6 @@ def main():
     need(all(not r[4] for r in planted) and all(not r[4] for r in f_planted),
          "every planted mistake fails, in both builds")
 
-    def write(name, lines):
-        with open(os.path.join(out_dir, name), "w") as f:
-            f.write("\n".join(lines).rstrip() + "\n")
-        print(f"== {name}\n" + "\n".join(lines))
-
     share = 100 * failed / groups
     bound = math.ceil(10000 * upper_bound(failed, groups)) / 100  # a bound, rounded up
     level = sidak_level(alpha, planted[0][2])  # the pixel-channels tested, as the planted rows count them
@@ -137,7 +128,7 @@ def main():
         digits = 2 if level / 2 < least < 2 * level else 1  # enough to compare with the level
         table.append(f"| {scene} | {fail} of {g} | {p(least, digits)} | {family:.2g} | "
                      f"{low} of {g} |")
-    write("ch14-false-alarms.md", table + [
+    write(out_dir, "ch14-false-alarms.md", table + [
         "",
         f"{number_word(failed)} group{'s' if failed != 1 else ''} of {groups:,} fail{'s' if failed == 1 else ''}, "
         f"{share:.1f} % (with 95 % confidence, the rate is at most {bound:.2f} %), "
@@ -149,7 +140,7 @@ def main():
 
     worst = max(r[1] for r in scenes)
     worst_scenes = ", ".join(s.split()[1] for s, fail, *_ in scenes if fail == worst)
-    write("ch14-choices-current.md",
+    write(out_dir, "ch14-choices-current.md",
           [f"| t-test | 1,024 renders | {failed} of {groups:,} | "
            f"{f'{worst} of {scenes[0][2]} ({worst_scenes})' if worst else 'none'} |"])
 
@@ -159,7 +150,7 @@ def main():
         rows.append(f"| {words} | {where} | {fail:,} | {p(least)} |")
     closest = max(planted, key=lambda r: r[3])
     margin = f"{level / closest[3]:.0e}".split("e")
-    write("ch14-planted.md", rows + [
+    write(out_dir, "ch14-planted.md", rows + [
         "",
         f"The closest, {MISTAKES[closest[0]][2]}, fails at a p-value ${margin[0]} \\times 10^{{{int(margin[1])}}}$ "
         "times smaller than the level. In the float build every one fails too."])

@@ -37,10 +37,12 @@ solutions pass their golden tests with no value failing), a run that breaks it f
 import json
 import math
 import os
-import struct
 import subprocess
 import sys
 import tempfile
+
+import measured
+from measured import n, need, write
 
 
 def setting(name):
@@ -54,11 +56,6 @@ SEEDS = [int(s) for s in setting("RTLAB_STAT_SEEDS")]
 TOLERANCE = setting("RTLAB_STAT_TOLERANCE")
 REAL = "double"  # the build's Real, read from its --version in main()
 
-
-
-def need(condition, what):
-    if not condition:
-        sys.exit(f"planted_counts.py: the chapters' prose no longer holds: {what}")
 
 
 def verdict(bin_dir, program, chapter, scene, seeds, extra=()):
@@ -102,15 +99,6 @@ def p(x, digits=1):
     return f"${m} \\times 10^{{{e}}}$"
 
 
-def read_pfm(path):
-    """A PFM's values, in file order (the order does not matter to a comparison)."""
-    with open(path, "rb") as f:
-        kind, size, scale, data = f.read().split(b"\n", 3)
-    need(kind == b"PF", f"{path} is a colour PFM")
-    w, h = map(int, size.split())
-    return struct.unpack(("<" if float(scale) < 0 else ">") + f"{w * h * 3}f", data[:w * h * 12])
-
-
 def variance(bin_dir, program, scene, seeds, tmp):
     """One render's variance per pixel-channel, from renders at `seeds`, as `./lab golden`
     makes a reference's (rtlab-stat reference --spread)."""
@@ -124,7 +112,7 @@ def variance(bin_dir, program, scene, seeds, tmp):
                     "--spread", *images], check=True, capture_output=True)
     for image in images:
         os.remove(image)
-    return read_pfm(var)
+    return measured.read_pfm(var)[2]  # in file order: the order does not matter to a comparison
 
 
 def t_threshold(level, dof):
@@ -148,7 +136,7 @@ def t_threshold(level, dof):
 def unstratified_variance(bin_dir, wrong):
     """§18.6: the planted sampler's variance against the reference's, and the failures the
     formula predicts from it."""
-    reference = read_pfm("tests/golden/ch18/balls.var.pfm")
+    reference = measured.read_pfm("tests/golden/ch18/balls.var.pfm")[2]
     seeds = list(range(1001, 2025))  # the reference's (tests/golden: seeds 1001 to 2024)
     with tempfile.TemporaryDirectory() as tmp:
         planted = variance(bin_dir, "planted_unstratified", "balls", seeds, tmp)
@@ -177,10 +165,6 @@ def unstratified_variance(bin_dir, wrong):
             "formula above over every pixel-channel, with its measured variance and the floor of §14.6, predicts "
             f"{predicted:.0f} failures. The test finds {wrong['failed']}, scattered over the two smears and the "
             "shadow under the sliding ball. In those places, the time decides what a ray sees.")
-
-
-def n(x):
-    return f"{x:,}"
 
 
 def by_hand(program, chapter, scene, short, v, correct, extra=()):
@@ -222,11 +206,6 @@ def main():
                              text=True).stdout
     REAL = version.split("Real=", 1)[1].split(",", 1)[0]
 
-    def write(name, lines):  # exact for a build: no date
-        with open(os.path.join(out_dir, name), "w") as f:
-            f.write("\n".join(lines).rstrip() + "\n")
-        print(f"== {name}\n" + "\n".join(lines))
-
     # Chapter 15.
     fence = verdict(bin_dir, "planted_unshuffled", 15, "fence", SEEDS)
     fence_ok = verdict(bin_dir, "ch15", 15, "fence", SEEDS)
@@ -235,13 +214,13 @@ def main():
     need(not fence["pass"] and not penumbra["pass"] and not corner["pass"], "the planted ch15 programs fail")
     need(fence_ok["pass"], "ch15 passes fence at the test's seeds")
     need(fence["failed"] > penumbra["failed"], "the unshuffled program fails fence more plainly than penumbra")
-    write("ch15-planted.md",
+    write(out_dir, "ch15-planted.md",
           [f"With `planted_unshuffled`, {n(fence['failed'])} of `fence`'s {n(fence['tests'])} pixel-channels fail, "
            f"with a smallest p of {p(fence['smallest_p'])}: the columns of the map in §15.2. The same program fails "
            f"`penumbra` too, with {n(penumbra['failed'])}, but the fence was built to make the mistake unmistakable. "
            f"With `planted_corner`, {n(corner['failed'])} of `penumbra`'s pixel-channels fail."])
-    write("ch15-by-hand.md", by_hand("planted_unshuffled", 15, "fence", "fence", fence, fence_ok))
-    write("ch15-false-alarms.md", [false_alarms(groups(bin_dir, 15, "penumbra", 5000) +
+    write(out_dir, "ch15-by-hand.md", by_hand("planted_unshuffled", 15, "fence", "fence", fence, fence_ok))
+    write(out_dir, "ch15-false-alarms.md", [false_alarms(groups(bin_dir, 15, "penumbra", 5000) +
                                                 groups(bin_dir, 15, "fence", 9000))])
 
     # Chapter 16.
@@ -255,28 +234,28 @@ def main():
     need(crowded_row["pass"], "the crowded lens passes on row's square lens")
     need(crowded["failed"] < 100 and crowded["smallest_p"] < crowded["level"] / 1000,
          "the crowded lens fails few pixel-channels, by far")
-    write("ch16-off-centre.md",
+    write(out_dir, "ch16-off-centre.md",
           [f"With `planted_off_centre`, {n(row['failed'])} of `row`'s {n(row['tests'])} pixel-channels fail (on "
            f"`lights`, {n(lights['failed'])})."])
-    write("ch16-by-hand.md", by_hand("planted_off_centre", 16, "row", "oc", row, row_ok))
-    write("ch16-crowded.md",
+    write(out_dir, "ch16-by-hand.md", by_hand("planted_off_centre", 16, "row", "oc", row, row_ok))
+    write(out_dir, "ch16-crowded.md",
           [f"With `planted_crowded_centre`, {n(crowded['failed'])} of `lights`' pixel-channels fail, with a "
            f"smallest p of {p(crowded['smallest_p'])}, far below the level of {p(crowded['level'], 2)}; on `row` the "
            f"same program passes."])
-    write("ch16-false-alarms.md", [false_alarms(groups(bin_dir, 16, "row", 5000) +
+    write(out_dir, "ch16-false-alarms.md", [false_alarms(groups(bin_dir, 16, "row", 5000) +
                                                 groups(bin_dir, 16, "lights", 9000))])
 
     # Chapter 14 (§14.6): its two false-alarm tests' 40 groups and the box filter by hand.
     alarms = groups(bin_dir, 14, "edges", 5000) + groups(bin_dir, 14, "checker", 7000)
     failed = sum(not v["pass"] for v in alarms)
     need(failed == 0, "no group of chapter 14's false-alarm tests fails")
-    write("ch14-stat-tests.md",
+    write(out_dir, "ch14-stat-tests.md",
           [f"In the {REAL} build no group of the two false-alarm tests fails; the smallest p of their 40 groups is "
            f"{p(min(v['smallest_p'] for v in alarms))}."])
     box = verdict(bin_dir, "ch14", 14, "edges", SEEDS, ("--filter", "box"))
     edges = verdict(bin_dir, "ch14", 14, "edges", SEEDS)
     need(not box["pass"] and edges["pass"], "the box filter fails edges and the tent passes")
-    write("ch14-by-hand.md", by_hand("ch14", 14, "edges", "box", box, edges, ("--filter", "box")))
+    write(out_dir, "ch14-by-hand.md", by_hand("ch14", 14, "edges", "box", box, edges, ("--filter", "box")))
 
     # Chapters 17 and 18: the golden tests' verdicts, the false-alarm test's 20 groups, and the
     # planted mistake with its transcript (§17.7, §18.6).
@@ -285,26 +264,26 @@ def main():
         golden = [verdict(bin_dir, f"ch{chapter}", chapter, scene, SEEDS) for scene in scenes]
         need(all(v["pass"] and v["failed"] == 0 for v in golden),
              f"chapter {chapter}'s reference solution passes its golden tests with no value failing")
-        write(f"ch{chapter}-golden.md",
+        write(out_dir, f"ch{chapter}-golden.md",
               [f"With the reference solutions in the {REAL} build, " +
                " and ".join(f"`golden_ch{chapter}_{scene}`" for scene in scenes) +
                " pass with no value failing (smallest p " + " and ".join(p(v["smallest_p"]) for v in golden) + ")."])
         alarms = groups(bin_dir, chapter, scenes[0], 5000)
         failed = sum(not v["pass"] for v in alarms)
         need(failed <= 1, f"stat_false_alarms_ch{chapter}_{scenes[0]} passes: at most one group of 20 fails")
-        write(f"ch{chapter}-false-alarms.md",
+        write(out_dir, f"ch{chapter}-false-alarms.md",
               [f"**False alarms.** `stat_false_alarms_ch{chapter}_{scenes[0]}` tests 20 more groups of 8 correct "
                f"renders, seeds 5000 to {5000 + 20 * len(SEEDS) - 1}, and passes when at most one group fails "
                f"(§14.6). In the {REAL} build {'no group fails' if failed == 0 else 'one group fails'}; the smallest "
                f"p of the 20 is {p(min(v['smallest_p'] for v in alarms))}."])
         wrong = verdict(bin_dir, f"planted_{planted}", chapter, scenes[0], SEEDS)
         need(not wrong["pass"], f"planted_{planted} fails on {scenes[0]}")
-        write(f"ch{chapter}-planted.md",
+        write(out_dir, f"ch{chapter}-planted.md",
               [f"In the {REAL} build, {n(wrong['failed'])} of the {n(wrong['tests'])} pixel-channels fail."])
-        write(f"ch{chapter}-by-hand.md",
+        write(out_dir, f"ch{chapter}-by-hand.md",
               by_hand(f"planted_{planted}", chapter, scenes[0], short, wrong, golden[0]))
         if chapter == 18:
-            write("ch18-variance.md", [unstratified_variance(bin_dir, wrong)])
+            write(out_dir, "ch18-variance.md", [unstratified_variance(bin_dir, wrong)])
 
 
 main()

@@ -20,46 +20,16 @@ checked here, and a run that breaks one fails (exit 1) instead of writing a sent
 would contradict. Times are quoted only as ratios measured in the same run.
 """
 
-import datetime
 import math
 import os
-import subprocess
 import sys
+
+import measured
+from measured import n, need, run, tex, write
 
 LEAK_RAYS = 500000
 TIME_RAYS = 200000
 TIME_ROUNDS = 5
-
-
-def cpu():
-    with open("/proc/cpuinfo") as f:
-        for line in f:
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    return "unknown processor"
-
-
-def run(binary, *args):
-    return subprocess.run([binary, *args], check=True, capture_output=True, text=True).stdout
-
-
-def need(condition, what):
-    if not condition:
-        sys.exit(f"precision_tables.py: the chapter's prose no longer holds: {what}")
-
-
-def n(x):
-    return f"{x:,}"
-
-
-def tex(x):
-    return n(x).replace(",", "{,}")
-
-
-def write(out_dir, name, lines, stamp=None):
-    with open(os.path.join(out_dir, name), "w") as f:
-        f.write("\n".join(([stamp, ""] if stamp else []) + lines).rstrip() + "\n")
-    print(f"== {name}\n" + "\n".join(lines))
 
 
 def accuracy(bin_dir):
@@ -195,8 +165,7 @@ def main():
     if len(sys.argv) != 4:
         sys.exit("usage: precision_tables.py DOUBLE_BIN_DIR FLOAT_BIN_DIR OUT_DIR")
     bins, out_dir = sys.argv[1:3], sys.argv[3]
-    stamp = (f"_Measured by `./lab bench precision` on {datetime.date.today().isoformat()}, {cpu()}, "
-             f"{os.cpu_count()} cores._")
+    stamp = measured.stamp("precision")
     os.makedirs(out_dir, exist_ok=True)
     ch02(bins, out_dir)
     ch03(bins, out_dir, stamp)

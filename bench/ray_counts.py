@@ -26,52 +26,13 @@ Every count is exact. The relations the prose relies on are checked, and a run t
 fails (exit 1) instead of writing a sentence the prose would contradict.
 """
 
-import datetime
 import json
 import os
-import struct
-import subprocess
 import sys
 import tempfile
 
-
-def cpu():
-    with open("/proc/cpuinfo") as f:
-        for line in f:
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    return "unknown processor"
-
-
-def run(binary, *args):
-    return subprocess.run([binary, *args], check=True, capture_output=True, text=True).stdout.strip().splitlines()[-1]
-
-
-def stats(binary, scene, *args):
-    """--stats of a render: the parsed JSON and the line as printed."""
-    with tempfile.TemporaryDirectory() as tmp:
-        line = run(binary, "--scene", scene, *args, "--stats", "-o", os.path.join(tmp, "x.png"))
-    return json.loads(line), line
-
-
-def need(condition, what):
-    if not condition:
-        sys.exit(f"ray_counts.py: the chapter's prose no longer holds: {what}")
-
-
-def n(x):
-    return f"{x:,}"
-
-
-def tex(x):
-    return n(x).replace(",", "{,}")
-
-
-def write(out_dir, name, lines, stamp=None):
-    """Exact counts need no date (stamp None); a time does."""
-    with open(os.path.join(out_dir, name), "w") as f:
-        f.write("\n".join(([stamp, ""] if stamp else []) + lines).rstrip() + "\n")
-    print(f"== {name}\n" + "\n".join(lines))
+import measured
+from measured import n, need, stats, tex, write
 
 
 def without(path, key, tmp):
@@ -93,12 +54,12 @@ def without(path, key, tmp):
 
 def ch02(bin_dir, out_dir):
     command = ["--scene", "sphere", "--width", "201", "--height", "151", "--pick", "100,75"]
-    line = run(os.path.join(bin_dir, "ch02"), *command)
+    line = measured.last_line(os.path.join(bin_dir, "ch02"), *command)
     middle = json.loads(line)
     need(middle["hit"] and middle["t"] == 2 and middle["normal"] == [0, 0, 1],
          "the middle pixel's ray meets the sphere at t = 2 exactly, facing the eye")
     write(out_dir, "ch02-pick-middle.md", ["```sh", "$ build/release/bin/ch02 " + " ".join(command), line, "```"])
-    pick = json.loads(run(os.path.join(bin_dir, "ch02"), "--scene", "sphere", "--pick", "200,150"))
+    pick = json.loads(measured.last_line(os.path.join(bin_dir, "ch02"), "--scene", "sphere", "--pick", "200,150"))
     need(pick["hit"] and 2 < pick["t"] < 2.001, "the pixel beside the centre sees the sphere at a t a little over 2")
     write(out_dir, "ch02-pick-default.md",
           [f"At the default 400×300 there is no middle pixel. `--pick 200,150` is the pixel just right of and "
@@ -119,8 +80,7 @@ def ch05(bin_dir, out_dir, stamp):
     with tempfile.TemporaryDirectory() as tmp:
         images = []
         for scene in ("spheres", "skipping"):
-            subprocess.run([ch05, "--scene", scene, "-o", os.path.join(tmp, scene + ".png")], check=True,
-                           capture_output=True)
+            measured.run(ch05, "--scene", scene, "-o", os.path.join(tmp, scene + ".png"))
             with open(os.path.join(tmp, scene + ".png"), "rb") as f:
                 images.append(f.read())
     need(images[0] == images[1], "spheres and skipping render the same image, byte for byte")
@@ -232,7 +192,7 @@ def ch06_pick(bin_dir, out_dir):
     """§6.7's --pick of a floor pixel in both shadows, trimmed (the fields the prose reads) and
     rounded, with the facts the prose draws from it checked."""
     command = ["--scene", "shadows", "--pick", "200,178"]
-    pick = json.loads(run(os.path.join(bin_dir, "ch06"), *command))
+    pick = json.loads(measured.last_line(os.path.join(bin_dir, "ch06"), *command))
     tree = pick["tree"]
     point, sun = tree["children"]
     need(pick["surface"] == "floor" and tree["hit"]["surface"] == "floor", "pixel 200,178 of shadows is on the floor")
@@ -278,24 +238,15 @@ def ch06_pick(bin_dir, out_dir):
         "(`null`)."])
 
 
-def read_pfm(path):
-    """A PFM's width, height and rows of (r, g, b), top row first."""
-    with open(path, "rb") as f:
-        kind, size, scale, data = f.read().split(b"\n", 3)
-    need(kind == b"PF", f"{path} is a colour PFM")
-    w, h = map(int, size.split())
-    values = struct.unpack(("<" if float(scale) < 0 else ">") + f"{w * h * 3}f", data[:w * h * 12])
-    rows = [[values[3 * (y * w + x):3 * (y * w + x) + 3] for x in range(w)] for y in range(h)]
-    return w, h, rows[::-1]  # PFM stores the bottom row first
-
-
 def ch13_lens(bin_dir, out_dir):
     """§13.8's magnifying glass: the stripes' widths in pixels along the row through the lens's
     centre (the image's middle row: the camera looks at it), in the middle and beside the lens."""
     with tempfile.TemporaryDirectory() as tmp:
         image = os.path.join(tmp, "lens.pfm")
-        subprocess.run([os.path.join(bin_dir, "ch13"), "--scene", "lens", "-o", image], check=True, capture_output=True)
-        w, h, rows = read_pfm(image)
+        measured.run(os.path.join(bin_dir, "ch13"), "--scene", "lens", "-o", image)
+        w, h, values = measured.read_pfm(image)
+    # Rows of (r, g, b), top row first (PFM stores the bottom row first).
+    rows = [[values[3 * (y * w + x):3 * (y * w + x) + 3] for x in range(w)] for y in range(h)][::-1]
     blue = [r[2] > r[0] + 0.1 for r in rows[h // 2]]  # the wall's blue stripes against its cream ones
     runs, start = [], 0  # (first pixel, width) of each stripe
     for x in range(1, w + 1):
@@ -373,8 +324,7 @@ def main():
     if len(sys.argv) != 3:
         sys.exit("usage: ray_counts.py BIN_DIR OUT_DIR")
     bin_dir, out_dir = sys.argv[1:]
-    stamp = (f"_Measured by `./lab bench counts` on {datetime.date.today().isoformat()}, {cpu()}, "
-             f"{os.cpu_count()} cores._")
+    stamp = measured.stamp("counts")
     os.makedirs(out_dir, exist_ok=True)
     ch02(bin_dir, out_dir)
     ch05(bin_dir, out_dir, stamp)

@@ -20,6 +20,8 @@ import math
 import re
 import sys
 
+from measured import n, need
+
 
 def load(path):
     tables, current, render = {}, None, None
@@ -50,11 +52,6 @@ def load(path):
     return tables, render
 
 
-def need(condition, what):
-    if not condition:
-        sys.exit(f"real_choice_summary.py: book §0.9's prose no longer holds: {what}")
-
-
 def power(d):
     return f"$10^{{{round(math.log10(d))}}}$"
 
@@ -63,10 +60,6 @@ def fastest(rows):
     """The stable form's time per call over the textbook form's, each at its fastest distance:
     the work per call does not depend on the distance, a busy machine only adds to it."""
     return min(r["stable_ns"] for r in rows) / min(r["text_ns"] for r in rows)
-
-
-def n(x):
-    return f"{x:,}"
 
 
 def eps(e):

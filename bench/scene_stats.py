@@ -11,13 +11,12 @@ the code changes. Times are on one thread, best of three, and quoted only as rat
 less.
 """
 
-import datetime
 import filecmp
-import json
 import os
-import subprocess
 import sys
 import tempfile
+
+import measured
 
 # (chapter binary, scene, structures in the order of the table, whether all must give the same
 # image: not for a scene shaded by cost, whose colours are the work each structure does).
@@ -32,20 +31,10 @@ ROUNDS = 3
 def render(binary, scene, accel, image):
     best = None
     for _ in range(ROUNDS):
-        out = subprocess.run([binary, "--scene", scene, "--accel", accel, "--threads", "1", "--stats", "-o", image],
-                             check=True, capture_output=True, text=True).stdout
-        stats = json.loads(out.strip().splitlines()[-1])
+        stats, _ = measured.stats(binary, scene, "--accel", accel, "--threads", "1", image=image)
         if best is None or stats["seconds"] < best["seconds"]:
             best = stats
     return best
-
-
-def cpu():
-    with open("/proc/cpuinfo") as f:
-        for line in f:
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    return "unknown processor"
 
 
 def table(chapter, scene, results):
@@ -95,8 +84,7 @@ def main():
     if len(sys.argv) != 3:
         sys.exit("usage: scene_stats.py BIN_DIR OUT_DIR")
     bin_dir, out_dir = sys.argv[1:]
-    stamp = (f"_Measured by `./lab bench scenes` on {datetime.date.today().isoformat()}, {cpu()}, "
-             f"{os.cpu_count()} cores._")
+    stamp = measured.stamp("scenes")
     with tempfile.TemporaryDirectory() as tmp:
         for chapter, scene, accels, must_match in SCENES:
             results, images = {}, []
@@ -106,10 +94,8 @@ def main():
                 results[accel] = render(os.path.join(bin_dir, chapter), scene, accel, image)
                 images.append(image)
             same = all(filecmp.cmp(images[0], i, shallow=False) for i in images[1:]) if must_match else None
-            text = [stamp, ""] + table(chapter, scene, results) + ["", notes(scene, results, same)]
-            with open(os.path.join(out_dir, f"{chapter}-{scene}.md"), "w") as f:
-                f.write("\n".join(text).rstrip() + "\n")
-            print("\n".join(text[2:]))
+            measured.write(out_dir, f"{chapter}-{scene}.md",
+                           table(chapter, scene, results) + ["", notes(scene, results, same)], stamp)
 
 
 main()

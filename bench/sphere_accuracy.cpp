@@ -1,24 +1,22 @@
 // What book §2.6 quotes of the sphere tests, in the configured Real: the tests' own rays
-// (tests/support/sphere_reference.hpp), measured and printed instead of asserted.
+// (tests/support/sphere_reference.hpp, sphere_area.hpp), measured and printed instead of asserted.
 //
 //   build/release/bin/bench_sphere_accuracy      (Real=double)
 //   build/float/bin/bench_sphere_accuracy        (Real=float)
-//   bench/sphere_accuracy.py                     (both, and the sentences; ./lab bench precision)
+//   bench/precision_tables.py                    (both, and the sentences; ./lab bench precision)
 //
 // One "key value" line per number: the graded stress test (stable form, 20,000 rays over
 // 0.999 of the silhouette of a sphere 10^4 radii away), the common program's comparison of
 // both forms (5,000 rays over 0.99), and the analytic area test (an orthographic sphere's
 // pixels against pi R^2).
 #include "geometry/sphere.hpp"
-#include "render/integrators.hpp"
-#include "render/render.hpp"
+#include "support/sphere_area.hpp"
 #include "support/sphere_reference.hpp"
 
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <limits>
-#include <memory>
 
 using namespace rt;
 
@@ -73,24 +71,8 @@ void both_forms() {
 
 // The test "analytic: an orthographic sphere covers pi R^2 of the window".
 void area() {
-    Scene scene;
-    scene.camera.projection = Projection::orthographic;
-    scene.camera.eye = Vec3(0, 0, 10);
-    scene.camera.target = Vec3(0);
-    scene.camera.window_height = 4;
-    const Real R = 1.3;
-    scene.surfaces.add(Sphere(Vec3(0), R));
-    scene.background = Color(0);
-    scene.integrator = std::make_shared<NormalIntegrator>();
-    RenderOptions o;
-    o.width = 400;
-    o.height = 400;
-    const Image img = render(scene, o).image;
-    int covered = 0;
-    for (const Color& c : img.pixels) covered += c != Color(0);
-    const double pixel = 4.0 / 400;
-    std::printf("area_covered %d\narea_disk %.6f\narea_perimeter %.6f\n", covered, M_PI * R * R / (pixel * pixel),
-                2 * M_PI * R / pixel);
+    const test::SphereArea a = test::orthographic_sphere_area();
+    std::printf("area_covered %d\narea_disk %.6f\narea_perimeter %.6f\n", a.covered, a.disk, a.perimeter);
 }
 
 }  // namespace

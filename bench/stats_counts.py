@@ -22,45 +22,15 @@ or time numbers where nothing needs them) are checked here, and a run that break
 best of five, quoted only as a ratio measured in the same run, the two renders alternating.
 """
 
-import datetime
 import json
 import os
-import resource
-import subprocess
 import sys
 import tempfile
 
+import measured
+from measured import n, need, stats, tex, write
+
 ROUNDS = 5
-
-
-def cpu():
-    with open("/proc/cpuinfo") as f:
-        for line in f:
-            if line.startswith("model name"):
-                return line.split(":", 1)[1].strip()
-    return "unknown processor"
-
-
-def stats(binary, scene, *args):
-    """The render's --stats, with the processor time it took ("cpu_seconds": user and system,
-    which another program's load disturbs far less than the time on the clock)."""
-    before = resource.getrusage(resource.RUSAGE_CHILDREN)
-    with tempfile.TemporaryDirectory() as tmp:
-        out = subprocess.run([binary, "--scene", scene, *args, "--stats", "-o", os.path.join(tmp, "x.png")],
-                             check=True, capture_output=True, text=True).stdout
-    after = resource.getrusage(resource.RUSAGE_CHILDREN)
-    st = json.loads(out.strip().splitlines()[-1])
-    st["cpu_seconds"] = (after.ru_utime - before.ru_utime) + (after.ru_stime - before.ru_stime)
-    return st
-
-
-def need(condition, what):
-    if not condition:
-        sys.exit(f"stats_counts.py: the chapter's prose no longer holds: {what}")
-
-
-def n(x):
-    return f"{x:,}"
 
 
 def compact(d, keys):
@@ -78,13 +48,6 @@ def excerpt(command, st, shading):
     else:
         lines[-1] += "}"
     return lines + ["```"]
-
-
-def write(out_dir, name, stamp, lines):
-    """Exact counts need no date (stamp None); a time or a program's whole output does."""
-    with open(os.path.join(out_dir, name), "w") as f:
-        f.write("\n".join(([stamp, ""] if stamp else []) + lines).rstrip() + "\n")
-    print(f"== {name}\n" + "\n".join(lines))
 
 
 def point_light_scene(path, tmp):
@@ -106,14 +69,13 @@ def main():
         sys.exit("usage: stats_counts.py BIN_DIR OUT_DIR")
     bin_dir, out_dir = sys.argv[1:]
     ch15, ch16 = os.path.join(bin_dir, "ch15"), os.path.join(bin_dir, "ch16")
-    stamp = (f"_Measured by `./lab bench counts` on {datetime.date.today().isoformat()}, {cpu()}, "
-             f"{os.cpu_count()} cores._")
+    stamp = measured.stamp("counts")
     small = ["--width", "64", "--height", "48"]
     os.makedirs(out_dir, exist_ok=True)
     penumbra_file = "chapters/ch15_soft_shadows/scenes/penumbra.json"
 
     # §15.4: penumbra's counts.
-    p = stats(ch15, "penumbra", *small)
+    p, _ = stats(ch15, "penumbra", *small)
     cam, terms = p["rays"]["camera"], p["shading"]["light_terms"]
     light, shadow = p["random_numbers"]["light"], p["rays"]["shadow"]
     need(cam == 64 * 48 * p["spp"], "one camera ray per sample")
@@ -121,9 +83,9 @@ def main():
     need(light == 2 * terms, "two light numbers per light term")
     need(shadow <= terms, "at most one shadow ray per light term")
     need(p["random_numbers"]["lens"] == 0 and p["random_numbers"]["time"] == 0, "no lens or time numbers")
-    write(out_dir, "ch15-penumbra-stats.md", None,
+    write(out_dir, "ch15-penumbra-stats.md",
           excerpt("build/release/bin/ch15 --scene penumbra --width 64 --height 48 --stats -o /tmp/p.png", p, True) +
-          ["", f"There are $64 \\times 48 \\times {p['spp']} = {n(cam).replace(',', '{,}')}$ camera rays, and each "
+          ["", f"There are $64 \\times 48 \\times {p['spp']} = {tex(cam)}$ camera rays, and each "
            f"takes two numbers for its film position. {n(terms)} of them hit something and shade it with the one "
            f"light, and each of those draws exactly two numbers in the light dimension, one point of the light's "
            f"square: {n(light)}. The shadow rays are one per light term, less the {n(terms - shadow)} whose light "
@@ -132,57 +94,55 @@ def main():
     # §15.4: the same with a point light, and fence.
     with tempfile.TemporaryDirectory() as tmp:
         point_file, centre = point_light_scene(penumbra_file, tmp)
-        q = stats(ch15, point_file, *small)
+        q, _ = stats(ch15, point_file, *small)
         need(q["shading"]["light_terms"] == terms, "the point light has the area light's light terms")
         need(q["random_numbers"]["light"] == 0, "a point light draws no light number")
         need(q["rays"]["shadow"] < shadow, "the area light casts more shadow rays than the point light")
-        f = stats(ch15, "fence", *small)
+        f, _ = stats(ch15, "fence", *small)
         fcam, fterms = f["rays"]["camera"], f["shading"]["light_terms"]
         need(fterms == fcam and f["rays"]["shadow"] == fcam, "in fence every camera ray makes a light term")
-        write(out_dir, "ch15-point-light.md", None,
+        write(out_dir, "ch15-point-light.md",
               [f"With the light replaced by a point light at its centre, the light terms are the same, {n(terms)}, "
                f"the light dimension draws nothing, and there are {n(q['rays']['shadow'])} shadow rays. The area "
                f"light casts {n(shadow - q['rays']['shadow'])} more."])
-        write(out_dir, "ch15-fence-stats.md", None,
+        write(out_dir, "ch15-fence-stats.md",
               [f"In `fence` every camera ray hits the floor or a slat and every point faces the light: {n(fterms)} "
                f"light terms, {n(f['random_numbers']['light'])} numbers and {n(f['rays']['shadow'])} shadow rays."])
 
         # §15.4: the time, as a ratio (absolute times move with the machine's load).
         # The two alternate, round after round, so that both see the same load.
         one = ["--threads", "1"]
-        runs = [(stats(ch15, "penumbra", *one), stats(ch15, point_file, *one)) for _ in range(ROUNDS)]
+        runs = [(stats(ch15, "penumbra", *one)[0], stats(ch15, point_file, *one)[0]) for _ in range(ROUNDS)]
         a = min(r[0]["cpu_seconds"] for r in runs)
         b = min(r[1]["cpu_seconds"] for r in runs)
         shape = runs[0][0]
-        write(out_dir, "ch15-area-light-time.md", stamp,
+        write(out_dir, "ch15-area-light-time.md",
               [f"At {shape['width']} × {shape['height']}, {shape['spp']} samples per pixel, on one thread, in "
                f"the {shape['real']} build, `penumbra` took {a / b:.2f} times as long with its area light as with "
                f"the point light (processor time of the whole run, best of {ROUNDS}, the two alternating, on a "
-               f"machine other programs share: only the ratio is quoted)."])
+               f"machine other programs share: only the ratio is quoted)."], stamp)
 
     # §0.4: what --stats prints, whole.
     with tempfile.TemporaryDirectory() as tmp:
-        line = subprocess.run([os.path.join(bin_dir, "ch02"), "--stats", "-o", os.path.join(tmp, "s.png")],
-                              check=True, capture_output=True, text=True).stdout.strip().splitlines()[-1]
+        line = measured.last_line(os.path.join(bin_dir, "ch02"), "--stats", "-o", os.path.join(tmp, "s.png"))
     json.loads(line)
-    write(out_dir, "ch02-stats-example.md", stamp, ["```sh", "$ build/release/bin/ch02 --stats -o /tmp/s.png", line,
-                                                     "```"])
+    write(out_dir, "ch02-stats-example.md", ["```sh", "$ build/release/bin/ch02 --stats -o /tmp/s.png", line, "```"],
+          stamp)
 
     # §16.1: the pinhole ray --pick traces through a pixel of row.
-    pick = json.loads(subprocess.run([ch16, "--scene", "row", "--pick", "228,157"], check=True, capture_output=True,
-                                     text=True).stdout)
+    pick = json.loads(measured.run(ch16, "--scene", "row", "--pick", "228,157"))
     need(pick["surface"] == "ball 3", "row's pixel (228, 157) sees the third ball")
-    write(out_dir, "ch16-pick.md", None,
+    write(out_dir, "ch16-pick.md",
           [f"In `row`, `--pick 228,157` finds the third ball at $t = {pick['t']:.2f}$, its front surface's depth "
            f"(here $d = 1$)."])
 
     # §16.5: row's counts.
-    r = stats(ch16, "row", *small)
+    r, _ = stats(ch16, "row", *small)
     rcam = r["rays"]["camera"]
     need(r["random_numbers"]["lens"] == 2 * rcam and r["random_numbers"]["pixel"] == 2 * rcam,
          "two film and two lens numbers per camera ray")
     need(r["random_numbers"]["light"] == 0 and r["random_numbers"]["time"] == 0, "no light or time numbers")
-    write(out_dir, "ch16-row-stats.md", None,
+    write(out_dir, "ch16-row-stats.md",
           excerpt("build/release/bin/ch16 --scene row --width 64 --height 48 --stats -o /tmp/r.png", r, False) +
           ["", f"Each of the {n(rcam)} camera rays draws two numbers for its film position and two for its place "
            f"on the lens."])

@@ -3,6 +3,7 @@
 #include "render/integrators.hpp"
 #include "render/render.hpp"
 #include "support.hpp"
+#include "support/sphere_area.hpp"
 #include "support/sphere_reference.hpp"
 
 #include <pcg_random.hpp>
@@ -198,26 +199,9 @@ TEST_CASE("2.2 stress: rays leaving a sphere's surface find t_near close to 0") 
 TEST_CASE("analytic: an orthographic sphere covers pi R^2 of the window") {
     // Count the pixels whose centre ray hits, and compare with the disk's area in pixels.
     // The error is bounded by the pixels the silhouette crosses: about its perimeter.
-    Scene scene;
-    scene.camera.projection = Projection::orthographic;
-    scene.camera.eye = Vec3(0, 0, 10);
-    scene.camera.target = Vec3(0);
-    scene.camera.window_height = 4;
-    const Real R = 1.3;
-    scene.surfaces.add(Sphere(Vec3(0), R));
-    scene.background = Color(0);
-    scene.integrator = std::make_shared<NormalIntegrator>();
-    RenderOptions o;
-    o.width = 400;
-    o.height = 400;
-    const Image img = render(scene, o).image;
-    int covered = 0;
-    for (const Color& c : img.pixels) covered += c != Color(0);
-    const double pixel = 4.0 / 400;
-    const double area = M_PI * R * R / (pixel * pixel);
-    const double perimeter = 2 * M_PI * R / pixel;
-    MESSAGE("covered " << covered << " pixels, disk area " << area << ", perimeter " << perimeter);
-    CHECK(std::abs(covered - area) < perimeter);
-    CHECK(std::abs(covered - area) < 0.01 * area);
+    const test::SphereArea a = test::orthographic_sphere_area();
+    MESSAGE("covered " << a.covered << " pixels, disk area " << a.disk << ", perimeter " << a.perimeter);
+    CHECK(std::abs(a.covered - a.disk) < a.perimeter);
+    CHECK(std::abs(a.covered - a.disk) < 0.01 * a.disk);
 }
 }  // TEST_SUITE("ch02")

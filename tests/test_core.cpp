@@ -1,10 +1,11 @@
 // The core layer's parts no exercise implements: the limits table and its messages, text
-// made safe for one line, unit vectors at the ends of the range, the Sampler's streams, and
-// the flat BVH's parallel build.
+// made safe for one line and for XML, unit vectors at the ends of the range, the Sampler's
+// streams, and the flat BVH's parallel build.
 #include "core/flat_bvh.hpp"
 #include "core/limits.hpp"
 #include "core/sampler.hpp"
 #include "core/text.hpp"
+#include "core/xml.hpp"
 #include "geometry/limits.hpp"
 #include "render/strata.hpp"
 #include "support.hpp"
@@ -88,6 +89,13 @@ TEST_CASE("one_line: control characters become escapes, UTF-8 stays") {
     CHECK(one_line("a\nb\tc\x1b[31m") == "a\\nb\\tc\\x1b[31m");
     CHECK(one_line("caf\xc3\xa9") == "caf\xc3\xa9");
     CHECK(one_line(std::string("\0x", 2)) == "\\x00x");
+}
+
+TEST_CASE("xml_escape: the four specials become entities, control characters go, UTF-8 stays") {
+    CHECK(xml_escape("a<b & \"c\">") == "a&lt;b &amp; &quot;c&quot;&gt;");
+    CHECK(xml_escape("line\none\t\x1b") == "lineone");
+    CHECK(xml_escape("\xce\xb8 \xe2\x82\x81") == "\xce\xb8 \xe2\x82\x81");  // θ ₁: a label's Greek and subscripts
+    CHECK(xml_escape("it's") == "it's");
 }
 
 TEST_CASE("unit_vector: any finite non-zero vector, huge or tiny, in float as in double") {

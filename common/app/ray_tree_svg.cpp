@@ -1,5 +1,7 @@
 #include "app/ray_tree_svg.hpp"
 
+#include "core/xml.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -28,23 +30,6 @@ std::string num(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.4g", v);
     return buf;
-}
-
-std::string escape(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        if (c == '<')
-            out += "&lt;";
-        else if (c == '>')
-            out += "&gt;";
-        else if (c == '&')
-            out += "&amp;";
-        else if (c == '"')
-            out += "&quot;";
-        else if (static_cast<unsigned char>(c) >= 0x20)
-            out += c;
-    }
-    return out;
 }
 
 std::string rgb(const Color& c) {
@@ -209,13 +194,13 @@ std::string ray_tree_svg(const Scene& scene, const RayTree& tree, const std::str
     std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"" + num(lo.x) + " " + num(lo.y - 0.12 * h) +
                       " " + num(w) + " " + num(h * 1.12) + "\" width=\"" + num(600 * w / std::max(w, h)) +
                       "\" height=\"" + num(600 * h * 1.12 / std::max(w, h)) + "\" font-family=\"sans-serif\">\n";
-    out += "<title>" + escape(title) + "</title>\n";
+    out += "<title>" + xml_escape(title) + "</title>\n";
     out += "<rect x=\"" + num(lo.x) + "\" y=\"" + num(lo.y - 0.12 * h) + "\" width=\"" + num(w) + "\" height=\"" +
            num(h * 1.12) + "\" fill=\"#ffffff\"/>\n";
     // Header: what this is, and the pixel's colour.
     const double fs = 11 * unit;
     out += "<text x=\"" + num(lo.x + 6 * unit) + "\" y=\"" + num(lo.y - 0.12 * h + 14 * unit) + "\" font-size=\"" +
-           num(fs) + "\">" + escape(title) + " — seen " + (from_above ? "from above" : "from the side") +
+           num(fs) + "\">" + xml_escape(title) + " — seen " + (from_above ? "from above" : "from the side") +
            ", the eye at the bottom</text>\n";
     out += "<rect x=\"" + num(hi.x - 40 * unit) + "\" y=\"" + num(lo.y - 0.12 * h + 4 * unit) + "\" width=\"" +
            num(34 * unit) + "\" height=\"" + num(14 * unit) + "\" fill=\"" + rgb(pixel) +
@@ -290,18 +275,18 @@ std::string ray_tree_svg(const Scene& scene, const RayTree& tree, const std::str
                "\" stroke=\"" + (blocked_shadow ? std::string("#dc2626") : kind_color(n.kind)) + "\" stroke-width=\"" +
                num(width) + "\"" +
                (n.kind == RayKind::shadow ? " stroke-dasharray=\"" + num(5 * unit) + "," + num(3 * unit) + "\"" : "") +
-               " stroke-opacity=\"" + num(opacity) + "\"><title>" + escape(tip) + "</title></line>\n";
+               " stroke-opacity=\"" + num(opacity) + "\"><title>" + xml_escape(tip) + "</title></line>\n";
         if (n.hit) {
             const char* fill = blocked_shadow ? "#dc2626" : "#111827";
             out += "<circle cx=\"" + num(b.x) + "\" cy=\"" + num(b.y) + "\" r=\"" + num(3 * unit) + "\" fill=\"" +
-                   fill + "\"><title>" + escape(tip) + "</title></circle>\n";
+                   fill + "\"><title>" + xml_escape(tip) + "</title></circle>\n";
         }
         // Label the weight where it is not 1: how much of this ray reaches its parent.
         if (label && *n.weight_of && n.kind != RayKind::shadow) {
             const double mx = (a.x + b.x) / 2, my = (a.y + b.y) / 2;
             const float g = (n.weight.r + n.weight.g + n.weight.b) / 3;
             out += "<text x=\"" + num(mx + 4 * unit) + "\" y=\"" + num(my) + "\" font-size=\"" + num(9 * unit) +
-                   "\" fill=\"" + kind_color(n.kind) + "\">×" + num(g) + " " + escape(n.weight_of) + "</text>\n";
+                   "\" fill=\"" + kind_color(n.kind) + "\">×" + num(g) + " " + xml_escape(n.weight_of) + "</text>\n";
         }
         if (blocked_shadow && label)
             out += "<text x=\"" + num(b.x + 4 * unit) + "\" y=\"" + num(b.y - 4 * unit) + "\" font-size=\"" +

@@ -16,12 +16,8 @@ namespace figures {
 
 Canvas bsp_cases(const rt::Fields& in) {
     rt::SurfaceList list;
-    std::vector<rt::Sphere> spheres;
-    for (const rt::Fields& s : in.objects("spheres")) {
-        spheres.emplace_back(s.vec3("center"), s.length("radius"));
-        s.done();
-        list.add(spheres.back());
-    }
+    const std::vector<rt::Sphere> spheres = spheres_of(in);
+    for (const rt::Sphere& s : spheres) list.add(s);
     if (spheres.size() != 2) in.fail("spheres", "needs two circles, one each side of the plane");
     const rt::Bsp bsp(list, rt::BspBuild::midpoint, 1);
     const rt::BspNode root = bsp.node(bsp.root());

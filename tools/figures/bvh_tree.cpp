@@ -23,13 +23,9 @@ constexpr auto kBuildNames = rt::names_of<Build>({"sorted", "midpoint"});
 
 Canvas bvh_tree(const rt::Fields& in) {
     const Build how = in.choice("build", kBuildNames, "build");
-    std::vector<rt::Sphere> spheres;
+    const std::vector<rt::Sphere> spheres = spheres_of(in);
     std::vector<rt::Box> boxes;
-    for (const rt::Fields& s : in.objects("spheres")) {
-        spheres.emplace_back(s.vec3("center"), s.length("radius"));
-        s.done();
-        boxes.push_back(rt::bounding_box(spheres.back()));
-    }
+    for (const rt::Sphere& s : spheres) boxes.push_back(rt::bounding_box(s));
     if (spheres.size() < 2 || spheres.size() > 26) in.fail("spheres", "needs 2 to 26 circles");
 
     rt::BvhBuilder builder(boxes);

@@ -19,10 +19,7 @@ Canvas csg_spans(const rt::Fields& in) {
     const rt::Fields sf = in.object("square");
     const rt::Cuboid square(sf.vec3("min"), sf.vec3("max"));
     sf.done();
-    const rt::Fields r = in.object("ray");
-    const rt::Ray ray{r.vec3("origin"), r.direction("direction")};
-    const rt::Real t_end = r.length("t_end");
-    r.done();
+    const auto [ray, t_end] = ray_of(in);
     if (ray.direction.x <= 0) in.fail("ray", "must move towards +x: its bars are laid out along x");
 
     rt::SpanList a, b;

@@ -23,8 +23,11 @@
 //      RTLAB_FIGURES_MIN in tests/figures.cmake to the new count). Look at it:
 //      rsvg-convert -o /tmp/fig.png out/chNN/figures/FIG.svg (librsvg2-bin).
 // Shared helpers (kinds.hpp, svg.hpp): flat() puts a point of the plane z = 0 on the page,
-// View3 draws 3D from a chosen direction, number() and degrees_between() write labels.
+// View3 draws 3D from a chosen direction, number() and degrees_between() write labels,
+// spheres_of() reads the circles a structure is built over, pixel_samples_of() one pixel's
+// samples, ray_of() the one ray a figure follows.
 #include "kinds.hpp"
+#include "render/antialiasing.hpp"
 
 #include <CLI/CLI.hpp>
 #include <nlohmann/json.hpp>
@@ -56,6 +59,32 @@ std::string number(double v, int digits) {
 double degrees_between(const rt::Vec3& a, const rt::Vec3& b) {
     const double c = double(glm::dot(rt::unit_vector(a), rt::unit_vector(b)));
     return std::acos(std::clamp(c, -1.0, 1.0)) * 180 / M_PI;
+}
+
+std::vector<rt::Sphere> spheres_of(const rt::Fields& in) {
+    std::vector<rt::Sphere> spheres;
+    for (const rt::Fields& s : in.objects("spheres")) {
+        spheres.emplace_back(s.vec3("center"), s.length("radius"));
+        s.done();
+    }
+    return spheres;
+}
+
+PixelSamples pixel_samples_of(const rt::Fields& in, int most) {
+    const int count = in.integer("samples", {"samples", 1, double(most), "", ""});
+    const auto side = rt::pattern_side(count);
+    if (!side) in.fail("samples", "must be a square number (4, 9, 16, ...)");
+    const auto seed = std::uint64_t(in.integer("seed", {"seed", 0, 1 << 30, "", ""}));
+    const auto pixel = std::uint64_t(in.integer("pixel", {"pixel", 0, 1 << 30, "", ""}));
+    return {count, *side, seed, pixel};
+}
+
+DrawnRay ray_of(const rt::Fields& in) {
+    const rt::Fields r = in.object("ray");
+    const rt::Ray ray{r.vec3("origin"), r.direction("direction")};
+    const rt::Real t_end = r.length("t_end");
+    r.done();
+    return {ray, t_end};
 }
 
 }  // namespace figures

@@ -11,7 +11,6 @@
 #include "render/strata.hpp"
 #include "shading/optics.hpp"
 
-#include <cstdint>
 #include <string>
 
 namespace figures {
@@ -20,11 +19,7 @@ Canvas glossy_square(const rt::Fields& in) {
     const rt::Vec3 n = rt::unit_vector(in.direction("normal"));
     const rt::Vec3 incoming = rt::unit_vector(in.direction("incoming"));
     const rt::Real a = in.number("width", rt::limits::glossy_width);
-    const int count = in.integer("samples", {"samples", 1, 256, "", ""});
-    const auto side = rt::pattern_side(count);
-    if (!side) in.fail("samples", "must be a square number (4, 9, 16, ...)");
-    const auto seed = std::uint64_t(in.integer("seed", {"seed", 0, 1 << 30, "", ""}));
-    const auto pixel = std::uint64_t(in.integer("pixel", {"pixel", 0, 1 << 30, "", ""}));
+    const auto [count, side, seed, pixel] = pixel_samples_of(in);
     if (!(glm::dot(incoming, n) < 0)) in.fail("incoming", "must point towards the surface (against the normal)");
 
     const rt::Vec3 r = rt::unit_vector(rt::reflect(incoming, n));
@@ -47,8 +42,8 @@ Canvas glossy_square(const rt::Fields& in) {
     const double zoom = 1 / double(a), h = 0.5;
     const P2 mid{2.3, 0.75};
     c.box(mid - P2{h, h}, mid + P2{h, h}, Ink::surface);
-    for (int k = 1; k < *side; ++k) {
-        const double s = -h + 2 * h * k / *side;
+    for (int k = 1; k < side; ++k) {
+        const double s = -h + 2 * h * k / side;
         c.line(mid + P2{s, -h}, mid + P2{s, h}, Ink::guide, Stroke::dashed);
         c.line(mid + P2{-h, s}, mid + P2{h, s}, Ink::guide, Stroke::dashed);
     }
@@ -58,7 +53,7 @@ Canvas glossy_square(const rt::Fields& in) {
     c.label(mid + P2{-h - 0.12, -h + 0.35}, "V", Ink::axis, -4, 0, Anchor::end);
 
     rt::Sampler sampler(seed, pixel);
-    sampler.set_strata(count, *side, rt::Strata::jittered);
+    sampler.set_strata(count, side, rt::Strata::jittered);
     int below = 0;
     for (int k = 0; k < count; ++k) {
         sampler.start_sample(k);

@@ -22,10 +22,7 @@ Canvas grid_trap(const rt::Fields& in) {
     const rt::SurfaceId tilted = list.add(rt::Triangle(corners[0], corners[1], corners[2]));
     const rt::SurfaceId sphere = list.add(ball);
     const rt::Grid grid(list, in.number("density", {"density", 0.01, 1000, "", ""}));
-    const rt::Fields r = in.object("ray");
-    const rt::Ray ray{r.vec3("origin"), r.direction("direction")};
-    const rt::Real t_end = r.length("t_end");
-    r.done();
+    const auto [ray, t_end] = ray_of(in);
 
     rt::HitRecord wrong = rt::no_hit_before(rt::kInfinity), right;
     if (!grid.walk_unchecked(list, ray, rt::Interval{}, wrong) || wrong.surface != tilted)

@@ -15,18 +15,11 @@ namespace figures {
 Canvas grid_walk(const rt::Fields& in) {
     const GridView view = grid_view(in);
     rt::SurfaceList list;
-    std::vector<rt::Sphere> spheres;
-    for (const rt::Fields& s : in.objects("spheres")) {
-        spheres.emplace_back(s.vec3("center"), s.length("radius"));
-        s.done();
-        list.add(spheres.back());
-    }
+    const std::vector<rt::Sphere> spheres = spheres_of(in);
+    for (const rt::Sphere& s : spheres) list.add(s);
     if (spheres.empty()) in.fail("spheres", "needs at least one sphere");
     const rt::Grid grid(list, in.number("density", {"density", 0.01, 1000, "", ""}));
-    const rt::Fields r = in.object("ray");
-    const rt::Ray ray{r.vec3("origin"), r.direction("direction")};
-    const rt::Real t_end = r.length("t_end");
-    r.done();
+    const auto [ray, t_end] = ray_of(in);
 
     const std::vector<WalkStep> steps = walk_cells(grid, ray, rt::Interval{});
     if (steps.empty()) in.fail("ray", "misses the grid");

@@ -1,9 +1,13 @@
 #pragma once
 // The kinds of figure a description may name, each drawn by one function in its own file
 // (NAME.cpp beside this one). Adding a kind: write that file, add its line here.
+#include "geometry/sphere.hpp"
 #include "io/json_reader.hpp"
 #include "render/camera.hpp"
 #include "svg.hpp"
+
+#include <cstdint>
+#include <vector>
 
 // X(name in the description's "kind", function)
 #define RTLAB_FIGURE_KINDS(X)                                 \
@@ -44,6 +48,23 @@ RTLAB_FIGURE_KINDS(RTLAB_FIGURE_DECLARE)
 std::string number(double v, int digits = 3);
 // The angle between two directions, in degrees, for a label.
 double degrees_between(const rt::Vec3& a, const rt::Vec3& b);
+// The description's "spheres", each {"center", "radius"}: the circles a flat figure's
+// structures (a BVH, a grid, a BSP tree) are built over.
+std::vector<rt::Sphere> spheres_of(const rt::Fields& in);
+// One pixel's samples, as the render loop sets its Sampler up for them: the description's
+// "samples" (a square number, at most `most`: the strata are side x side), "seed" and "pixel".
+struct PixelSamples {
+    int count, side;
+    std::uint64_t seed, pixel;
+};
+PixelSamples pixel_samples_of(const rt::Fields& in, int most = 256);
+// The description's one "ray", {"origin", "direction", "t_end"}: the ray, and how far along it
+// the figure draws it.
+struct DrawnRay {
+    rt::Ray ray;
+    rt::Real t_end;
+};
+DrawnRay ray_of(const rt::Fields& in);
 
 // An orthographic view of a 3D figure, seen from the direction `toward_viewer` with `up`
 // up the page: the page's axes are the frame the library's camera_basis (exercise 1.1)

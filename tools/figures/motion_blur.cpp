@@ -10,7 +10,6 @@
 #include "render/camera.hpp"
 #include "render/strata.hpp"
 
-#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -21,15 +20,8 @@ Canvas motion_blur(const rt::Fields& in) {
     const rt::Sphere ball(from, in.length("radius"), to - from);
     const std::vector<rt::Real> shutter = in.numbers("shutter", 2, rt::limits::shutter);
     if (!(shutter[0] < shutter[1])) in.fail("shutter", "must open before it closes");
-    const int count = in.integer("samples", {"samples", 1, 256, "", ""});
-    const auto side = rt::pattern_side(count);
-    if (!side) in.fail("samples", "must be a square number (4, 9, 16, ...)");
-    const auto seed = std::uint64_t(in.integer("seed", {"seed", 0, 1 << 30, "", ""}));
-    const auto pixel = std::uint64_t(in.integer("pixel", {"pixel", 0, 1 << 30, "", ""}));
-    const rt::Fields rf = in.object("ray");
-    rt::Ray ray{rf.vec3("origin"), rf.direction("direction")};
-    const rt::Real t_end = rf.length("t_end");
-    rf.done();
+    const auto [count, side, seed, pixel] = pixel_samples_of(in);
+    auto [ray, t_end] = ray_of(in);
 
     Canvas c;
     const rt::Box swept = rt::bounding_box(ball);
@@ -58,7 +50,7 @@ Canvas motion_blur(const rt::Fields& in) {
     c.label(clock((shutter[0] + shutter[1]) / 2), "shutter open", Ink::axis, 0, -28, Anchor::middle, true);
 
     rt::Sampler sampler(seed, pixel);
-    sampler.set_strata(count, *side, rt::Strata::jittered);
+    sampler.set_strata(count, side, rt::Strata::jittered);
     int hits = 0;
     for (int k = 0; k < count; ++k) {
         sampler.start_sample(k);

@@ -7,17 +7,12 @@
 #include "render/render.hpp"
 #include "render/strata.hpp"
 
-#include <cstdint>
 #include <string>
 
 namespace figures {
 
 Canvas pixel_samples(const rt::Fields& in) {
-    const int count = in.integer("samples", {"samples", 1, 1024, "", ""});
-    const auto side = rt::pattern_side(count);
-    if (!side) in.fail("samples", "must be a square number (4, 9, 16, ...)");
-    const auto seed = std::uint64_t(in.integer("seed", {"seed", 0, 1 << 30, "", ""}));
-    const auto pixel = std::uint64_t(in.integer("pixel", {"pixel", 0, 1 << 30, "", ""}));
+    const auto [count, side, seed, pixel] = pixel_samples_of(in, 1024);
 
     Canvas c;
     double left = 0;
@@ -25,11 +20,11 @@ Canvas pixel_samples(const rt::Fields& in) {
          {rt::PixelPattern::random, rt::PixelPattern::regular, rt::PixelPattern::jittered}) {
         const rt::Strata strata = rt::strata_of(rt::Antialiasing{pattern, rt::PixelFilter::box});
         rt::Sampler sampler(seed, pixel);
-        sampler.set_strata(count, *side, strata);
+        sampler.set_strata(count, side, strata);
         c.box({left, 0}, {left + 1, 1}, Ink::surface);
         if (strata != rt::Strata::none)
-            for (int k = 1; k < *side; ++k) {
-                const double s = double(k) / *side;
+            for (int k = 1; k < side; ++k) {
+                const double s = double(k) / side;
                 c.line({left + s, 0}, {left + s, 1}, Ink::guide, Stroke::dashed);
                 c.line({left, s}, {left + 1, s}, Ink::guide, Stroke::dashed);
             }

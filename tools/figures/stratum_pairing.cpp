@@ -12,17 +12,12 @@
 #include "shading/light.hpp"
 
 #include <algorithm>
-#include <cstdint>
 #include <string>
 
 namespace figures {
 
 Canvas stratum_pairing(const rt::Fields& in) {
-    const int count = in.integer("samples", {"samples", 1, 256, "", ""});
-    const auto side = rt::pattern_side(count);
-    if (!side) in.fail("samples", "must be a square number (4, 9, 16, ...)");
-    const auto seed = std::uint64_t(in.integer("seed", {"seed", 0, 1 << 30, "", ""}));
-    const auto pixel = std::uint64_t(in.integer("pixel", {"pixel", 0, 1 << 30, "", ""}));
+    const auto [count, side, seed, pixel] = pixel_samples_of(in);
     const rt::Fields lf = in.object("light");
     rt::Light light;
     light.type = rt::Light::Type::parallelogram;
@@ -48,8 +43,8 @@ Canvas stratum_pairing(const rt::Fields& in) {
     const P2 c0 = on_light(light.position), ca = on_light(light.position + light.edge_a),
              cb = on_light(light.position + light.edge_b), cab = on_light(light.position + light.edge_a + light.edge_b);
     c.polygon({c0, ca, cab, cb}, Ink::light);
-    for (int k = 1; k < *side; ++k) {
-        const double s = double(k) / *side;
+    for (int k = 1; k < side; ++k) {
+        const double s = double(k) / side;
         c.line({s, 0}, {s, 1}, Ink::guide, Stroke::dashed);
         c.line({0, s}, {1, s}, Ink::guide, Stroke::dashed);
         c.line(c0 + s * (ca - c0), cb + s * (ca - c0), Ink::guide, Stroke::dashed);
@@ -62,13 +57,13 @@ Canvas stratum_pairing(const rt::Fields& in) {
     c.label(cb, "b", Ink::light, -6, 0, Anchor::end);
 
     rt::Sampler sampler(seed, pixel);
-    sampler.set_strata(count, *side, rt::Strata::jittered);
+    sampler.set_strata(count, side, rt::Strata::jittered);
     for (int k = 0; k < count; ++k) {
         sampler.start_sample(k);
         const rt::Vec2 film = rt::camera_sample(0, 0, rt::PixelFilter::box, sampler).film;
         const P2 on_pixel{double(film.x), double(film.y)};
         const P2 lit = on_light(rt::light_point(light, rt::sample_square(sampler, rt::Dimension::light)));
-        const bool bottom = k < *side;  // the pixel's strata are taken row by row from the bottom
+        const bool bottom = k < side;  // the pixel's strata are taken row by row from the bottom
         c.dot(on_pixel, Ink::camera, !bottom);
         c.dot(lit, Ink::camera, !bottom);
         c.label(on_pixel, std::to_string(k), Ink::axis, 5, 3, Anchor::start, true);

@@ -1,5 +1,7 @@
 #include "svg.hpp"
 
+#include "core/xml.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -55,23 +57,6 @@ std::string num(double v) {
     char buf[32];
     std::snprintf(buf, sizeof buf, "%.1f", v);
     return buf;
-}
-
-std::string escape(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        if (c == '<')
-            out += "&lt;";
-        else if (c == '>')
-            out += "&gt;";
-        else if (c == '&')
-            out += "&amp;";
-        else if (c == '"')
-            out += "&quot;";
-        else
-            out += c;
-    }
-    return out;
 }
 
 // Characters, not bytes: a Greek letter or a subscript is one glyph of two or three bytes.
@@ -190,7 +175,7 @@ std::string Canvas::svg(const std::string& title) const {
     std::string out = "<svg xmlns=\"http://www.w3.org/2000/svg\" viewBox=\"0 0 " + num(page_w) + " " + num(page_h) +
                       "\" width=\"" + num(page_w) + "\" height=\"" + num(page_h) +
                       "\" font-family=\"DejaVu Sans, Helvetica, Arial, sans-serif\">\n";
-    out += "<title>" + escape(title) + "</title>\n";
+    out += "<title>" + rt::xml_escape(title) + "</title>\n";
     out += "<rect width=\"100%\" height=\"100%\" fill=\"#ffffff\"/>\n";
     for (const Item& it : items_) {
         const Colors c = palette(it.ink);
@@ -261,7 +246,7 @@ std::string Canvas::svg(const std::string& title) const {
                 out += "<text x=\"" + num(q.x) + "\" y=\"" + num(q.y) + "\" font-size=\"" +
                        num(it.fill ? kSmallFont : kFont) + "\" text-anchor=\"" + anchor + "\" fill=\"" +
                        text_color(it.ink) + "\" stroke=\"#ffffff\" stroke-width=\"4\" paint-order=\"stroke\">" +
-                       escape(it.text) + "</text>\n";
+                       rt::xml_escape(it.text) + "</text>\n";
                 break;
             }
         }
