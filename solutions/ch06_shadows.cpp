@@ -40,7 +40,7 @@ Color direct_light(const Scene& scene, const Light& light, int light_index, cons
     if (l.color == Color(0) || glm::dot(sp.side, l.direction) <= 0) return Color(0);
     // Up to the light and not including it: a point light sits at t = distance.
     const Real end = std::isfinite(l.distance) ? std::nextafter(l.distance, Real(0)) : kInfinity;
-    const SpawnedRay shadow = spawn_ray(sp.p, sp.side, l.direction, end, scene.offset, 0, sp.error);
+    const SpawnedRay shadow = spawn_ray(sp, l.direction, end, scene.offset);
     if (in_shadow(scene, shadow, light_index, l.color, context)) return Color(0);
     Color c = lambert(sp.diffuse, l.color, sp.n, l.direction);
     if (sp.material.has_specular()) {

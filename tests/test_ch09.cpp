@@ -3,8 +3,10 @@
 // geometry, mirror images and near-singular scales included.
 #include "geometry/procedural.hpp"
 #include "geometry/shape.hpp"
+#include "geometry/sphere.hpp"
 #include "io/scene_file.hpp"
 #include "support.hpp"
+#include "support/big_ground.hpp"
 #include "support/source_dir.hpp"
 
 #include <pcg_random.hpp>
@@ -155,6 +157,38 @@ TEST_CASE("9.1 instances hit where the explicitly transformed mesh does: t, poin
         CHECK(both > 2000);
         CHECK(disagree <= 4);
         CHECK(failures == 0);
+    }
+}
+
+TEST_CASE("instances carry a sphere's error bound into the world: no acne on a ground scaled up or down") {
+    // A ground sphere of radius R = 10^3 to 10^5 centred R below the origin (the big ground
+    // of book §6.3), made by an instance from a unit sphere scaled up and from one 100 R
+    // across scaled down. The world record's bound is the object's times the scale, plus the
+    // transform's rounding: about the bound of the same sphere built in the world. Left in
+    // object space, it would be R times too small (acne) or 100 times too large (a gap any
+    // occluder that close slips through).
+    for (int e = 3; e <= 5; ++e) {
+        const Real radius = Real(std::pow(10.0, e));
+        const Real world_bound = sphere_error(Sphere(Vec3(0, -radius, 0), radius));
+        for (const Real object_radius : {Real(1), 100 * radius}) {
+            CAPTURE(radius);
+            CAPTURE(object_radius);
+            const Sphere object(Vec3(0, -object_radius, 0), object_radius);
+            Scene scene;
+            scene.surfaces.add(
+                Instance(std::make_shared<const Shape>(object), Affine::scale(Vec3(radius / object_radius))), 0,
+                "ground");
+            Real least = kInfinity, most = 0;
+            const test::SelfShadow count = test::self_shadow(scene, [&](const HitRecord& rec) {
+                least = std::min(least, rec.error);
+                most = std::max(most, rec.error);
+                return rec.error;
+            });
+            CHECK(count.rays > 13000);
+            CHECK(count.acne == 0);
+            CHECK(least >= world_bound);
+            CHECK(most <= Real(1.1) * world_bound);
+        }
     }
 }
 

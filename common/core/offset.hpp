@@ -51,15 +51,27 @@ struct SpawnedRay {
     Interval interval;
 };
 
-// The ray from surface point p in `direction` (any length), accepted up to t = max, leaving
-// on the side of the unit geometric normal n_side. `error` is how far the computed p may lie
-// off the true surface, as the shape that found it reports it (HitRecord::error): the robust
-// method starts at least that far out along n_side, since offset_origin's step follows p's
-// coordinates, not the shape's size: a ground sphere of radius 1000 centred 1000 below the
-// origin has hit points near y = 0, where the step is 2^-40 (2^-45 just past |y| = 1/32),
-// and errors the size of a unit in the last place of 1000 (book §6.3).
-inline SpawnedRay spawn_ray(const Vec3& p, const Vec3& n_side, const Vec3& direction, Real max, const Offset& o,
-                            Real time = 0, Real error = 0) {
+// Where a secondary ray leaves a surface: the point p, the unit geometric normal `side`
+// turned towards the side the ray goes to, and `error`, how far the computed p may lie off
+// the true surface, as the shape that found it reports it (HitRecord::error). The three
+// travel together, and the constructor wants all three, so that no ray can leave a point
+// without its bound (a shape with no error of its own says 0 where it builds the point).
+struct SurfacePoint {
+    SurfacePoint(const Vec3& p, const Vec3& side, Real error) : p(p), side(side), error(error) {}
+    Vec3 p;
+    Vec3 side;
+    Real error;
+};
+
+// The ray from surface point `from` in `direction` (any length), accepted up to t = max,
+// made by the method of `o`. The robust method starts at least `from.error` out along the
+// side, since offset_origin's step follows p's coordinates, not the shape's size: a ground
+// sphere of radius 1000 centred 1000 below the origin has hit points near y = 0, where the
+// step is 2^-40 (2^-45 just past |y| = 1/32), and errors the size of a unit in the last
+// place of 1000 (book §6.3).
+inline SpawnedRay spawn_ray(const SurfacePoint& from, const Vec3& direction, Real max, const Offset& o, Real time = 0) {
+    const Vec3& p = from.p;
+    const Vec3& n_side = from.side;
     switch (o.method) {
         case OffsetMethod::normal:
             return {Ray{p + o.epsilon * n_side, direction, time}, Interval{0, max}};
@@ -70,8 +82,8 @@ inline SpawnedRay spawn_ray(const Vec3& p, const Vec3& n_side, const Vec3& direc
             const Vec3 q = offset_origin(p, n_side);
             // Where the step already clears the bound, keep it: most hits, and every hit of
             // a shape that reports no error (0), start exactly where exercise 6.1 puts them.
-            if (!(glm::dot(q - p, n_side) < error)) return {Ray{q, direction, time}, Interval{0, max}};
-            return {Ray{offset_origin(p + error * n_side, n_side), direction, time}, Interval{0, max}};
+            if (!(glm::dot(q - p, n_side) < from.error)) return {Ray{q, direction, time}, Interval{0, max}};
+            return {Ray{offset_origin(p + from.error * n_side, n_side), direction, time}, Interval{0, max}};
         }
     }
 }

@@ -51,6 +51,11 @@ private:
     Box box_;
 };
 
+// How far the world record's p may lie off the instance's surface (HitRecord::error): the
+// base shape's bound `local.error`, stretched by the transform along the normal, plus the
+// rounding of the transform both ways (the hit point out, a spawned ray's origin back).
+Real world_error(const Instance& instance, const HitRecord& local, const HitRecord& world);
+
 bool hit(const Instance& instance, const Ray& ray, Interval interval, InstanceHit& result);
 bool occluded(const Instance& instance, const Ray& ray, Interval interval);
 HitRecord record(const Instance& instance, const Ray& ray, const InstanceHit& h, SurfaceRef who = {});

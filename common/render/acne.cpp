@@ -47,7 +47,7 @@ AcneCount count_acne(const Scene& scene, int width, int height) {
             const LightSample l = light.sample(rec.p);
             if (glm::dot(side, l.direction) <= 0) continue;
             ++count.lit;
-            const SpawnedRay s = spawn_ray(rec.p, side, l.direction, l.distance, scene.offset, 0, rec.error);
+            const SpawnedRay s = spawn_ray({rec.p, side, rec.error}, l.direction, l.distance, scene.offset);
             const bool reported = scene.occluded(s.ray, s.interval);
             // The truth: any other (convex) surface across the ray, searched from p itself.
             bool truth = false;

@@ -34,13 +34,11 @@ Color WhittedIntegrator::Li(const Scene& scene, const Ray& ray, TraceContext& co
     const Material& m = scene.material(rec.material);
     // Shade the side the ray arrives on; which side that is, the geometric normal decides.
     const bool front = glm::dot(rec.normal, ray.direction) < 0;
-    const ShadePoint sp{rec.p,
-                        front ? rec.normal : -rec.normal,
+    const ShadePoint sp{{rec.p, front ? rec.normal : -rec.normal, rec.error},
                         front ? rec.shading_normal : -rec.shading_normal,
                         -unit_vector(ray.direction),
                         m.diffuse_at(rec.p),
-                        m,
-                        rec.error};
+                        m};
     Color c = sp.diffuse * scene.ambient;
     // A surface with neither a diffuse colour nor a highlight (clear glass, a perfect
     // mirror) takes nothing from the lights: no shadow rays.
@@ -83,7 +81,7 @@ Color WhittedIntegrator::trace(const Scene& scene, const Ray& ray, const HitReco
                                RayKind kind, const Color& weight, const char* why, TraceContext& context) const {
     // Leave on the side the new ray goes to: outside for a reflection, inside for a refraction.
     const Vec3 side = glm::dot(direction, rec.normal) >= 0 ? rec.normal : -rec.normal;
-    const SpawnedRay s = spawn_ray(rec.p, side, direction, kInfinity, scene.offset, ray.time, rec.error);
+    const SpawnedRay s = spawn_ray({rec.p, side, rec.error}, direction, kInfinity, scene.offset, ray.time);
     TraceContext child = context.child(kind, s.interval, weight, why);
     if (!(child.reach > 0)) return Color(0);
     if (child.reach < scene.min_reach) {

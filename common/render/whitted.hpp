@@ -10,15 +10,15 @@
 
 namespace rt {
 
-// A hit, turned towards the viewer and ready to shade.
-struct ShadePoint {
-    Vec3 p;         // the hit point
-    Vec3 side;      // unit geometric normal on the viewer's side: where shadow rays leave from
+// A hit, turned towards the viewer and ready to shade. Its SurfacePoint part (core/offset.hpp)
+// is where shadow rays leave from: `p`, the hit point; `side`, the unit geometric normal on
+// the viewer's side; `error`, how far p may lie off the surface (HitRecord::error). So
+// spawn_ray(sp, ...) takes all three, and the bound cannot be left behind.
+struct ShadePoint : SurfacePoint {
     Vec3 n;         // unit shading normal on the same side: what the shading terms use
     Vec3 v;         // unit, towards the viewer
     Color diffuse;  // the material's diffuse colour at p
     const Material& material;
-    Real error = 0;  // how far p may lie off the surface (HitRecord::error): spawn_ray clears it
 };
 
 // Casts the shadow ray `s` towards light number `light` of the scene (any-hit, counted as a

@@ -27,7 +27,7 @@ Canvas shadow_offset(const rt::Fields& in) {
     for (const bool offset_it : {false, true}) {
         const rt::Vec3 exact(offset_it ? with : without, 0, 0), p = exact - error * n;
         const rt::SpawnedRay shadow =
-            offset_it ? rt::spawn_ray(p, n, light - p, 1, offset) : rt::SpawnedRay{rt::Ray{p, light - p}, {0, 1}};
+            offset_it ? rt::spawn_ray({p, n, 0}, light - p, 1, offset) : rt::SpawnedRay{rt::Ray{p, light - p}, {0, 1}};
         rt::PolygonHit h;
         const bool blocked = rt::hit(surface, shadow.ray, shadow.interval, h);
         if (blocked) {
