@@ -103,9 +103,16 @@ struct MeshRay {
     std::optional<WideRay<kMeshBvhWidth>> wide;
     std::optional<RayShear> shear_;
 
-    // `wide` stays empty when the ray misses the mesh's box: then nothing else is made.
-    MeshRay(const Ray& r, const Mesh& mesh, Interval interval) : ray(r), inv(Real(1) / r.direction) {
-        if (might_hit(mesh.box(), ray, inv, interval)) wide.emplace(ray, inv);
+    // With `box_first`, `wide` stays empty when the ray misses the mesh's box: then nothing
+    // else is made. A closest-hit query asks it: a camera ray at a mesh alone in its scene
+    // meets no other box first, and most such rays that miss the mesh miss its box too.
+    // A shadow ray does not: it leaves a surface, inside this mesh's box when the surface
+    // is the mesh's, and past the upper level's test of the box when it is not, so the
+    // test in double would be paid for nothing (bunny shadow rays, callgrind: 1,106 -> 1,055
+    // instructions unblocked, 1,245 -> 1,194 blocked); the root's eight float boxes still
+    // turn away a ray that misses.
+    MeshRay(const Ray& r, const Mesh& mesh, Interval interval, bool box_first) : ray(r), inv(Real(1) / r.direction) {
+        if (!box_first || might_hit(mesh.box(), ray, inv, interval)) wide.emplace(ray, inv);
     }
 
     const RayShear& shear() {
@@ -144,7 +151,7 @@ struct Closest {
 bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
     const MeshAccel& a = mesh.accel();
     interval = in_registers(interval);
-    MeshRay r(ray, mesh, interval);
+    MeshRay r(ray, mesh, interval, true);
     if (!r.wide) return false;
     const Real t_min = interval.min;
     Closest best{interval.max};
@@ -160,7 +167,7 @@ bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
 bool occluded(const Mesh& mesh, const Ray& ray, Interval interval) {
     const MeshAccel& a = mesh.accel();
     interval = in_registers(interval);
-    MeshRay r(ray, mesh, interval);
+    MeshRay r(ray, mesh, interval, false);
     if (!r.wide) return false;
     // The shear made now, not at the first leaf: a shadow ray leaves a surface, so it reaches
     // at least the leaf of that surface, and made there, inside the search, the call cost the
