@@ -28,13 +28,14 @@ import subprocess
 import sys
 import time
 
-from selenium import webdriver
-from selenium.webdriver.chrome.options import Options
-from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 
 root = pathlib.Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(root / "tools"))
+from chromium import browser  # noqa: E402
+from chromium import wait_for as wait_or_none  # noqa: E402
+
 bin_dir, screenshot = pathlib.Path(sys.argv[1]).resolve(), pathlib.Path(sys.argv[2]).resolve()
 work = root / "out/bench/explore"
 work.mkdir(parents=True, exist_ok=True)
@@ -67,15 +68,6 @@ def spheres_whitted():
     return path
 
 
-def browser():
-    options = Options()
-    for a in ("--headless=new", "--no-sandbox", "--window-size=1300,1000", "--use-angle=swiftshader",
-              "--enable-unsafe-swiftshader", "--disable-dev-shm-usage"):
-        options.add_argument(a)
-    options.binary_location = "/usr/bin/chromium"
-    return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
-
-
 def serve(scene, *args):
     p = subprocess.Popen([str(bin_dir / "ch07"), "--explore", "--scene", str(scene), *SIZE, *args],
                          stdout=subprocess.PIPE, text=True)
@@ -83,13 +75,10 @@ def serve(scene, *args):
 
 
 def wait_for(driver, script, seconds=60):
-    deadline = time.time() + seconds
-    while time.time() < deadline:
-        value = driver.execute_script(script)
-        if value:
-            return value
-        time.sleep(0.05)
-    raise RuntimeError(f"timed out waiting for: {script}")
+    value = wait_or_none(driver, script, seconds, poll=0.05)
+    if not value:
+        raise RuntimeError(f"timed out waiting for: {script}")
+    return value
 
 
 # Every frame the page draws, kept in the page: what a frame cost, where.
