@@ -11,9 +11,13 @@ For each scene, ch07 --explore serves it at 640x360 on 2 threads and Debian's ch
   move      a single orbit step, then the time until the first frame made after it is
             drawn (median and worst of 15)
   click     a pixel picked, then the time until its ray tree is drawn (median and worst of 10)
-and where a refining frame's time goes: render (the pass, on the server), encode (the frame
-into the format sent), transfer (its bytes, from the response's headers to its last byte)
-and draw (into the canvas). Then the three formats a frame can travel in, for the bunny.
+and where a refining frame's time goes: render (render() itself), pass (all the render
+thread's time between two frames: render() and what it does around it; the frame interval
+while refining), finish (the pass added into the running sum and made 8-bit sRGB, on a
+second thread while the next pass renders), encode (the frame into the format sent),
+transfer (its bytes, from the response's headers to its last byte) and draw (into the
+canvas). All but render and pass overlap the next pass: they slow it only by taking a share
+of the 2 cores. Then the four formats a frame can travel in, for the bunny.
 Scenes: the Stanford bunny (69,451 triangles, from ../shared/assets: never copied into the
 lab) with normal shading, and Whitted with one light; bench/scenes/spheres488.json (the
 layout of Ray Tracing in One Weekend's cover: a grid of small spheres, three large ones, a
@@ -133,7 +137,8 @@ def measure(driver, url):
     clicks = driver.execute_script("return window.rtlab.clickLatencies.slice()")
     return {
         "moving": moving, "moving_full": full, "refining": refining,
-        "mrays": mean(records, "mrays"), "render": mean(records, "renderMs"), "encode": mean(records, "encodeMs"),
+        "mrays": mean(records, "mrays"), "render": mean(records, "renderMs"), "pass": mean(records, "passMs"),
+        "finish": mean(records, "finishMs"), "encode": mean(records, "encodeMs"),
         "transfer": mean(records, "transferMs"), "draw": mean(records, "drawMs"), "bytes": mean(records, "bytes"),
         "move_median": statistics.median(moves) if moves else float("nan"), "move_worst": max(moves, default=float("nan")),
         "moves": len(moves),
@@ -167,7 +172,7 @@ try:
     if bunny_obj.is_file():
         server, url = serve(bunny_scene("normal"), "--spp", "4096")
         try:
-            for fmt in ("rgba", "png", "jpeg"):
+            for fmt in ("rgba", "rgb", "png", "jpeg"):
                 driver.get(url + f"?format={fmt}")
                 wait_for(driver, "const f = window.rtlab.frame; return f && f.width === 640")
                 driver.execute_script(RECORD)
@@ -206,9 +211,10 @@ for name, r, load_average in results:
           f"{r['move_median']:6.0f}/{r['move_worst']:<6.0f} {r['click_median']:6.0f}/{r['click_worst']:<6.0f} {load_average:5.1f}")
 print()
 print("Where a refining frame's time goes (mean ms per frame):")
-print(f"{'scene':24} {'render':>7} {'encode':>7} {'transfer':>9} {'draw':>6}")
+print(f"{'scene':24} {'render':>7} {'pass':>7} {'finish':>7} {'encode':>7} {'transfer':>9} {'draw':>6}")
 for name, r, _ in results:
-    print(f"{name:24} {r['render']:7.1f} {r['encode']:7.2f} {r['transfer']:9.2f} {r['draw']:6.2f}")
+    print(f"{name:24} {r['render']:7.1f} {r['pass']:7.1f} {r['finish']:7.2f} {r['encode']:7.2f} {r['transfer']:9.2f} "
+          f"{r['draw']:6.2f}")
 if formats:
     print()
     print("The formats, bunny normal, refining (mean per frame):")
