@@ -22,6 +22,11 @@ using Clock = std::chrono::steady_clock;
 constexpr int kExploreSamples = 16;
 // A pass slower than this is first shown at a lower resolution after each change.
 constexpr double kQuickPassMs = 25;
+// After a change's preview, refining starts once the view has been still this long. While
+// the mouse moves (a change every 16 ms or so, two or three of them in this time), a full-size
+// pass begun between two changes is thrown away at the second: the cores are better left to
+// the next change's pass and to the browser drawing it.
+constexpr auto kSettle = std::chrono::milliseconds(40);
 
 json vec_json(const Vec3& v) {
     return json::array({v.x, v.y, v.z});
@@ -346,6 +351,12 @@ void ExploreSession::loop() {
             fresh = true;
         }
         if (!ready || samples >= o.spp) continue;
+        if (!fresh && samples == 0) {  // the change's preview made: still for kSettle?
+            std::unique_lock lock(mutex_);
+            const bool moved = changed_.wait_until(lock, handed + kSettle, [&] { return stop_ || dirty_; });
+            handed = Clock::now();  // waiting is not the pass's time
+            if (moved) continue;
+        }
 
         Pass pass;
         pass.generation = generation;
