@@ -4,7 +4,8 @@
   bench/explore_bench.py BIN_DIR SCREENSHOT.png
 
 For each scene, ch07 --explore serves it at 640x360 on 2 threads and Debian's chromium
-(headless, through selenium) loads the page and counts the frames it actually draws:
+(headless, through selenium; composited in software and WebGL on SwiftShader, as
+tools/chromium.py says why) loads the page and counts the frames it actually draws:
   moving    the camera orbits a little every 16 ms for 4 s: every frame is a first frame
             after a move, one sample per pixel (smaller while a full pass is too slow)
   refining  the camera still for 3 s: a sample per pixel per frame
@@ -200,7 +201,7 @@ finally:
     driver.quit()
 
 print("640x360, 2 render threads; frames counted as headless chromium drew them;")
-print("frames sent as raw RGBA (the formats: last table). The machine was shared:")
+print("frames sent as raw RGB (the formats: last table). The machine was shared:")
 print("its load average while measuring is the last column. Targets: moving >= 30 fps")
 print("(normal) and >= 15 (whitted); move <= 50 ms; click <= 100 ms.")
 print()

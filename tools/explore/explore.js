@@ -5,7 +5,7 @@
 
 const $ = (id) => document.getElementById(id);
 const params = new URLSearchParams(location.search);
-const format = params.get('format') || 'rgba';  // how frames travel: rgba (chosen, see the book), rgb, png, jpeg
+const format = params.get('format') || 'rgb';  // how frames travel: rgb (chosen, see the book), rgba, png, jpeg
 
 // What the tests and ./lab bench explore read (tests/explore_browser_test.py, bench/explore_bench.py).
 const rtlab = window.rtlab = {
