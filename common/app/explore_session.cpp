@@ -354,7 +354,7 @@ void ExploreSession::loop() {
         if (!fresh && samples == 0) {  // the change's preview made: still for kSettle?
             std::unique_lock lock(mutex_);
             const bool moved = changed_.wait_until(lock, handed + kSettle, [&] { return stop_ || dirty_; });
-            handed = Clock::now();  // waiting is not the pass's time
+            pass_start = handed = Clock::now();  // waiting is not the pass's time
             if (moved) continue;
         }
 
