@@ -22,7 +22,7 @@ using Clock = std::chrono::steady_clock;
 constexpr int kExploreSamples = 16;
 // A pass slower than this is first shown at a lower resolution after each change.
 constexpr double kQuickPassMs = 25;
-// After a change's preview, refining starts once the view has been still this long. While
+// After a change's first frame, refining starts once the view has been still this long. While
 // the mouse moves (a change every 16 ms or so, two or three of them in this time), a full-size
 // pass begun between two changes is thrown away at the second: the cores are better left to
 // the next change's pass and to the browser drawing it.
@@ -304,6 +304,7 @@ void ExploreSession::loop() {
     RenderOptions o;
     int samples = 0;
     bool fresh = false, ready = false;
+    bool settle = false;      // the change's first pass made: refine once the view is still
     double full_pass_ms = 0;  // of the last full-size pass: decides the preview's size
     // A pass's time runs from the hand-over of the one before, when this thread goes
     // straight on, or from the change that woke it: all the time between two frames but the
@@ -349,9 +350,11 @@ void ExploreSession::loop() {
             o.sample_count = 1;
             samples = 0;
             fresh = true;
+            settle = false;
         }
         if (!ready || samples >= o.spp) continue;
-        if (!fresh && samples == 0) {  // the change's preview made: still for kSettle?
+        if (settle) {
+            settle = false;
             std::unique_lock lock(mutex_);
             const bool moved = changed_.wait_until(lock, handed + kSettle, [&] { return stop_ || dirty_; });
             pass_start = handed = Clock::now();  // waiting is not the pass's time
@@ -369,6 +372,7 @@ void ExploreSession::loop() {
             // A pass that refines is dropped for a change; the first after a change is not:
             // while the mouse moves faster than passes finish, each shows a frame.
             po.cancel = fresh ? nullptr : &overtaken_;
+            settle = fresh;
             fresh = false;
             po.first_sample = shrink > 1 ? 0 : samples;
             // Each pass its own random numbers (a pixel's streams run in order, so pass k cannot
