@@ -4,16 +4,21 @@
   bench/explore_bench.py BIN_DIR SCREENSHOT.png
 
 For each scene, ch07 --explore serves it at 640x360 on 2 threads and Debian's chromium
-(headless, through selenium) loads the page and counts the frames it actually draws:
+(headless, through selenium; composited in software and WebGL on SwiftShader, as
+tools/chromium.py says why) loads the page and counts the frames it actually draws:
   moving    the camera orbits a little every 16 ms for 4 s: every frame is a first frame
             after a move, one sample per pixel (smaller while a full pass is too slow)
   refining  the camera still for 3 s: a sample per pixel per frame
   move      a single orbit step, then the time until the first frame made after it is
             drawn (median and worst of 15)
   click     a pixel picked, then the time until its ray tree is drawn (median and worst of 10)
-and where a refining frame's time goes: render (the pass, on the server), encode (the frame
-into the format sent), transfer (its bytes, from the response's headers to its last byte)
-and draw (into the canvas). Then the three formats a frame can travel in, for the bunny.
+and where a refining frame's time goes: render (render() itself), pass (all the render
+thread's time between two frames: render() and what it does around it; the frame interval
+while refining), finish (the pass added into the running sum and made 8-bit sRGB, on a
+second thread while the next pass renders), encode (the frame into the format sent),
+transfer (its bytes, from the response's headers to its last byte) and draw (into the
+canvas). All but render and pass overlap the next pass: they slow it only by taking a share
+of the 2 cores. Then the four formats a frame can travel in, for the bunny.
 Scenes: the Stanford bunny (69,451 triangles, from ../shared/assets: never copied into the
 lab) with normal shading, and Whitted with one light; bench/scenes/spheres488.json (the
 layout of Ray Tracing in One Weekend's cover: a grid of small spheres, three large ones, a
@@ -28,13 +33,14 @@ import subprocess
 import sys
 import time
 
-from selenium import webdriver
-from selenium.webdriver.chrome.options import Options
-from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 
 root = pathlib.Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(root / "tools"))
+from chromium import browser  # noqa: E402
+from chromium import wait_for as wait_or_none  # noqa: E402
+
 bin_dir, screenshot = pathlib.Path(sys.argv[1]).resolve(), pathlib.Path(sys.argv[2]).resolve()
 work = root / "out/bench/explore"
 work.mkdir(parents=True, exist_ok=True)
@@ -67,15 +73,6 @@ def spheres_whitted():
     return path
 
 
-def browser():
-    options = Options()
-    for a in ("--headless=new", "--no-sandbox", "--window-size=1300,1000", "--use-angle=swiftshader",
-              "--enable-unsafe-swiftshader", "--disable-dev-shm-usage"):
-        options.add_argument(a)
-    options.binary_location = "/usr/bin/chromium"
-    return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
-
-
 def serve(scene, *args):
     p = subprocess.Popen([str(bin_dir / "ch07"), "--explore", "--scene", str(scene), *SIZE, *args],
                          stdout=subprocess.PIPE, text=True)
@@ -83,13 +80,10 @@ def serve(scene, *args):
 
 
 def wait_for(driver, script, seconds=60):
-    deadline = time.time() + seconds
-    while time.time() < deadline:
-        value = driver.execute_script(script)
-        if value:
-            return value
-        time.sleep(0.05)
-    raise RuntimeError(f"timed out waiting for: {script}")
+    value = wait_or_none(driver, script, seconds, poll=0.05)
+    if not value:
+        raise RuntimeError(f"timed out waiting for: {script}")
+    return value
 
 
 # Every frame the page draws, kept in the page: what a frame cost, where.
@@ -144,7 +138,8 @@ def measure(driver, url):
     clicks = driver.execute_script("return window.rtlab.clickLatencies.slice()")
     return {
         "moving": moving, "moving_full": full, "refining": refining,
-        "mrays": mean(records, "mrays"), "render": mean(records, "renderMs"), "encode": mean(records, "encodeMs"),
+        "mrays": mean(records, "mrays"), "render": mean(records, "renderMs"), "pass": mean(records, "passMs"),
+        "finish": mean(records, "finishMs"), "encode": mean(records, "encodeMs"),
         "transfer": mean(records, "transferMs"), "draw": mean(records, "drawMs"), "bytes": mean(records, "bytes"),
         "move_median": statistics.median(moves) if moves else float("nan"), "move_worst": max(moves, default=float("nan")),
         "moves": len(moves),
@@ -178,7 +173,7 @@ try:
     if bunny_obj.is_file():
         server, url = serve(bunny_scene("normal"), "--spp", "4096")
         try:
-            for fmt in ("rgba", "png", "jpeg"):
+            for fmt in ("rgba", "rgb", "png", "jpeg"):
                 driver.get(url + f"?format={fmt}")
                 wait_for(driver, "const f = window.rtlab.frame; return f && f.width === 640")
                 driver.execute_script(RECORD)
@@ -206,7 +201,7 @@ finally:
     driver.quit()
 
 print("640x360, 2 render threads; frames counted as headless chromium drew them;")
-print("frames sent as raw RGBA (the formats: last table). The machine was shared:")
+print("frames sent as raw RGB (the formats: last table). The machine was shared:")
 print("its load average while measuring is the last column. Targets: moving >= 30 fps")
 print("(normal) and >= 15 (whitted); move <= 50 ms; click <= 100 ms.")
 print()
@@ -217,9 +212,10 @@ for name, r, load_average in results:
           f"{r['move_median']:6.0f}/{r['move_worst']:<6.0f} {r['click_median']:6.0f}/{r['click_worst']:<6.0f} {load_average:5.1f}")
 print()
 print("Where a refining frame's time goes (mean ms per frame):")
-print(f"{'scene':24} {'render':>7} {'encode':>7} {'transfer':>9} {'draw':>6}")
+print(f"{'scene':24} {'render':>7} {'pass':>7} {'finish':>7} {'encode':>7} {'transfer':>9} {'draw':>6}")
 for name, r, _ in results:
-    print(f"{name:24} {r['render']:7.1f} {r['encode']:7.2f} {r['transfer']:9.2f} {r['draw']:6.2f}")
+    print(f"{name:24} {r['render']:7.1f} {r['pass']:7.1f} {r['finish']:7.2f} {r['encode']:7.2f} {r['transfer']:9.2f} "
+          f"{r['draw']:6.2f}")
 if formats:
     print()
     print("The formats, bunny normal, refining (mean per frame):")

@@ -15,15 +15,14 @@ import subprocess
 import sys
 import time
 
-from selenium import webdriver
-from selenium.webdriver.chrome.options import Options
-from selenium.webdriver.chrome.service import Service
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
 from selenium.webdriver.support.ui import Select
 
 sys.path.insert(0, str(pathlib.Path(__file__).parent))
+sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "tools"))
 from checks import check, finish  # noqa: E402
+from chromium import browser, wait_for  # noqa: E402
 
 root, bin_dir, work = (pathlib.Path(a).resolve() for a in sys.argv[1:4])
 work.mkdir(parents=True, exist_ok=True)
@@ -31,26 +30,6 @@ ch07 = str(bin_dir / "ch07")
 W, H = 320, 180
 SCENE = root / "chapters/ch07_specular_reflection/scenes/mirrors.json"
 size = ["--width", str(W), "--height", str(H)]
-
-
-def browser():
-    options = Options()
-    for a in ("--headless=new", "--no-sandbox", "--window-size=1300,1000", "--use-angle=swiftshader",
-              "--enable-unsafe-swiftshader", "--disable-dev-shm-usage"):
-        options.add_argument(a)
-    options.binary_location = "/usr/bin/chromium"
-    return webdriver.Chrome(service=Service("/usr/bin/chromedriver"), options=options)
-
-
-def wait_for(driver, script, seconds=120):
-    """The value of `script` once it is truthy, or None after `seconds`."""
-    deadline = time.time() + seconds
-    while time.time() < deadline:
-        value = driver.execute_script(script)
-        if value:
-            return value
-        time.sleep(0.1)
-    return None
 
 
 def numbers(text):

@@ -133,6 +133,18 @@ try:
     status, headers, _ = request("/api/frame?after=0")
     check(float(headers["X-Nodes-Per-Ray"]) > 0 and float(headers["X-Primitives-Per-Ray"]) > 0,
           f"a frame says what the search cost per ray: {headers['X-Nodes-Per-Ray']}, {headers['X-Primitives-Per-Ray']}")
+    # The same frame as rgb and as rgba: asked for in turn until both are of one frame (the
+    # view converges in a few passes, and then the frame stays).
+    same = None
+    for _ in range(100):
+        _, h_rgb, packed = request("/api/frame?after=0&format=rgb")
+        _, h_rgba, rgba = request("/api/frame?after=0&format=rgba")
+        if h_rgb["X-Frame-Id"] == h_rgba["X-Frame-Id"]:
+            same = (packed, rgba)
+            break
+        time.sleep(0.05)
+    check(same is not None and len(same[0]) == W * H * 3 and same[0] == bytes(b for i, b in enumerate(same[1]) if i % 4 != 3),
+          "format=rgb sends the RGBA frame's bytes without alpha")
     for fmt, magic in (("png", b"\x89PNG"), ("jpeg", b"\xff\xd8")):
         status, headers, body = request(f"/api/frame?after=0&format={fmt}")
         check(status == 200 and body.startswith(magic) and headers["Content-Type"].startswith("image/"),
@@ -156,7 +168,7 @@ try:
         ("/api/frame?after=abc", None, 400, "parameter 'after' must be a whole number"),
         ("/api/frame?after=-1", None, 400, "parameter 'after'"),
         ("/api/frame?wait=99999999", None, 400, "parameter 'wait'"),
-        ("/api/frame?format=gif", None, 400, "must be rgba, png or jpeg, not 'gif'"),
+        ("/api/frame?format=gif", None, 400, "must be rgb, rgba, png or jpeg, not 'gif'"),
         ("/api/pick?x=5", None, 400, "missing parameter 'y'"),
         (f"/api/pick?x={W}&y=0", None, 400, f"is outside the {W}x{H} image"),
         ("/api/pick?x=1e3&y=0", None, 400, "parameter 'x'"),

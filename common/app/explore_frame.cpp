@@ -36,26 +36,36 @@ void append(void* context, void* data, int size) {
 
 }  // namespace
 
-void to_rgba(const Image& image, std::vector<std::uint8_t>& rgba) {
-    rgba.resize(image.pixels.size() * 4);
-    for (std::size_t i = 0; i < image.pixels.size(); ++i) {
-        for (int c = 0; c < 3; ++c) rgba[4 * i + std::size_t(c)] = encode(image.pixels[i][c]);
-        rgba[4 * i + 3] = 255;
+void to_rgb(const Image& image, std::vector<std::uint8_t>& rgb) {
+    rgb.resize(image.pixels.size() * 3);
+    std::uint8_t* out = rgb.data();
+    for (const Color& p : image.pixels) {
+        *out++ = encode(p.r);
+        *out++ = encode(p.g);
+        *out++ = encode(p.b);
     }
 }
 
-void mean_to_rgba(const std::vector<double>& sum, int samples, std::vector<std::uint8_t>& rgba) {
-    const std::size_t pixels = sum.size() / 3;
+void accumulate_to_rgb(const Image& pass, std::vector<double>& sum, int samples, std::vector<std::uint8_t>& rgb) {
     const double scale = 1.0 / samples;
-    rgba.resize(pixels * 4);
-    for (std::size_t i = 0; i < pixels; ++i) {
-        for (std::size_t c = 0; c < 3; ++c) rgba[4 * i + c] = encode(sum[3 * i + c] * scale);
-        rgba[4 * i + 3] = 255;
+    rgb.resize(pass.pixels.size() * 3);
+    double* s = sum.data();
+    std::uint8_t* out = rgb.data();
+    for (const Color& p : pass.pixels) {
+        s[0] += double(p.r);
+        s[1] += double(p.g);
+        s[2] += double(p.b);
+        *out++ = encode(s[0] * scale);
+        *out++ = encode(s[1] * scale);
+        *out++ = encode(s[2] * scale);
+        s += 3;
     }
 }
 
 bool frame_format(const std::string& name, FrameFormat& format) {
-    if (name == "rgba")
+    if (name == "rgb")
+        format = FrameFormat::rgb;
+    else if (name == "rgba")
         format = FrameFormat::rgba;
     else if (name == "png")
         format = FrameFormat::png;
@@ -81,14 +91,21 @@ std::string encode_frame(const ExploreFrame& f, FrameFormat format) {
     std::string out;
     bool ok = true;
     switch (format) {
+        case FrameFormat::rgb:
+            out.assign(f.rgb.begin(), f.rgb.end());
+            break;
         case FrameFormat::rgba:
-            out.assign(f.rgba.begin(), f.rgba.end());
+            out.resize(f.rgb.size() / 3 * 4);
+            for (std::size_t i = 0, n = f.rgb.size() / 3; i < n; ++i) {
+                for (std::size_t c = 0; c < 3; ++c) out[4 * i + c] = char(f.rgb[3 * i + c]);
+                out[4 * i + 3] = char(255);
+            }
             break;
         case FrameFormat::png:
-            ok = stbi_write_png_to_func(append, &out, f.width, f.height, 4, f.rgba.data(), f.width * 4) != 0;
+            ok = stbi_write_png_to_func(append, &out, f.width, f.height, 3, f.rgb.data(), f.width * 3) != 0;
             break;
         case FrameFormat::jpeg:
-            ok = stbi_write_jpg_to_func(append, &out, f.width, f.height, 4, f.rgba.data(), 90) != 0;
+            ok = stbi_write_jpg_to_func(append, &out, f.width, f.height, 3, f.rgb.data(), 90) != 0;
             break;
     }
     if (!ok) throw std::runtime_error("cannot encode a frame");

@@ -1,6 +1,6 @@
 #pragma once
-// The explorer's frames: what a progressive pass leaves for the page, and the three ways it
-// can travel (book §0, "The lab explorer": ./lab bench explore measures them).
+// The explorer's frames: what a progressive pass leaves for the page, and the ways it can
+// travel (book §0, "The lab explorer": ./lab bench explore measures them).
 #include "render/image.hpp"
 
 #include <cstdint>
@@ -16,20 +16,24 @@ struct ExploreFrame {
     int samples = 0;               // samples per pixel so far
     int target_samples = 0;        // where refining stops
     double render_ms = 0;          // of the pass that made it
+    double finish_ms = 0;          // after it: into the running sum and 8-bit sRGB
+    double pass_ms = 0;            // since the pass before it was handed on: the frame interval
     double mrays_per_s = 0;        // rays of that pass (every kind) over its time
     // What the search cost that pass, per ray (book §10.6): boxes (nodes) visited and
     // primitives tested.
     double nodes_per_ray = 0, primitives_per_ray = 0;
-    std::vector<std::uint8_t> rgba;  // sRGB, 8 bits, top row first
+    std::vector<std::uint8_t> rgb;  // sRGB, 8 bits, 3 per pixel, top row first
 };
 
-// Linear colours to 8-bit sRGB RGBA (alpha 255), clamped to [0, 1].
-void to_rgba(const Image& image, std::vector<std::uint8_t>& rgba);
-// The same from a running sum of `samples` passes (double, 3 per pixel).
-void mean_to_rgba(const std::vector<double>& sum, int samples, std::vector<std::uint8_t>& rgba);
+// Linear colours to 8-bit sRGB, clamped to [0, 1].
+void to_rgb(const Image& image, std::vector<std::uint8_t>& rgb);
+// Adds a pass to the running sum (double, 3 per pixel) and writes the mean of the `samples`
+// passes summed so far: one sweep over the memory, not one to add and one to convert.
+void accumulate_to_rgb(const Image& pass, std::vector<double>& sum, int samples, std::vector<std::uint8_t>& rgb);
 
-enum class FrameFormat { rgba, png, jpeg };
-// "rgba" (the bytes as they are), "png" or "jpeg" (quality 90); false for anything else.
+enum class FrameFormat { rgb, rgba, png, jpeg };
+// "rgb" (the bytes as they are), "rgba" (alpha 255 added), "png" or "jpeg" (quality 90);
+// false for anything else.
 bool frame_format(const std::string& name, FrameFormat& format);
 const char* mime_type(FrameFormat format);
 std::string encode_frame(const ExploreFrame& frame, FrameFormat format);

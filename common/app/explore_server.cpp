@@ -117,7 +117,7 @@ int explore(const ChapterApp& app, const ChapterApp::Invocation& inv) {
         res.set_content(s.state().dump(-1, ' ', false, json::error_handler_t::replace), "application/json");
     });
 
-    // GET /api/frame?after=N[&format=rgba|png|jpeg][&wait=MS]: the first frame newer than N,
+    // GET /api/frame?after=N[&format=rgb|rgba|png|jpeg][&wait=MS]: the first frame newer than N,
     // waiting up to MS (default 1000) for it: long polling. 204 when there is none yet.
     server.Get("/api/frame", [&](const httplib::Request& req, httplib::Response& res) {
         const auto after = number_param(req, res, "after", std::numeric_limits<long long>::max(), 0);
@@ -126,7 +126,7 @@ int explore(const ChapterApp& app, const ChapterApp::Invocation& inv) {
         FrameFormat format = FrameFormat::rgba;
         const std::string name = req.has_param("format") ? req.get_param_value("format") : "rgba";
         if (!frame_format(name, format))
-            return fail(res, 400, "parameter 'format' must be rgba, png or jpeg, not '" + name + "'");
+            return fail(res, 400, "parameter 'format' must be rgb, rgba, png or jpeg, not '" + name + "'");
         const auto frame = s.frame_after(std::uint64_t(*after), std::chrono::milliseconds(*wait));
         const std::string error = s.render_error();
         res.set_header("Access-Control-Expose-Headers", "*");
@@ -146,6 +146,8 @@ int explore(const ChapterApp& app, const ChapterApp::Invocation& inv) {
         header("X-Samples", frame->samples);
         header("X-Target-Samples", frame->target_samples);
         header("X-Render-Ms", frame->render_ms);
+        header("X-Finish-Ms", frame->finish_ms);
+        header("X-Pass-Ms", frame->pass_ms);
         header("X-Encode-Ms", encode_ms);
         header("X-Mrays", frame->mrays_per_s);
         header("X-Nodes-Per-Ray", frame->nodes_per_ray);

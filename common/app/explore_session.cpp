@@ -15,12 +15,18 @@ namespace rt {
 namespace {
 
 using nlohmann::json;
+using Clock = std::chrono::steady_clock;
 
 // Samples per pixel the view refines to when neither --spp nor the scene says: enough to
 // see antialiasing, soft shadows and lenses settle, few enough to finish in seconds.
 constexpr int kExploreSamples = 16;
 // A pass slower than this is first shown at a lower resolution after each change.
 constexpr double kQuickPassMs = 25;
+// After a change's first frame, refining starts once the view has been still this long. While
+// the mouse moves (a change every 16 ms or so, two or three of them in this time), a full-size
+// pass begun between two changes is thrown away at the second: the cores are better left to
+// the next change's pass and to the browser drawing it.
+constexpr auto kSettle = std::chrono::milliseconds(40);
 
 json vec_json(const Vec3& v) {
     return json::array({v.x, v.y, v.z});
@@ -74,6 +80,7 @@ ExploreSession::ExploreSession(const ChapterApp& app, const ChapterApp::Invocati
     pending_.options = true;
     pending_.invocation = inv;
     dirty_ = true;
+    finisher_ = std::thread([this] { finish_loop(); });
     thread_ = std::thread([this] { loop(); });
 }
 
@@ -85,6 +92,12 @@ ExploreSession::~ExploreSession() {
     }
     changed_.notify_all();
     thread_.join();
+    {
+        std::lock_guard lock(pass_mutex_);
+        finish_stop_ = true;
+    }
+    passed_.notify_all();
+    finisher_.join();
 }
 
 RenderOptions ExploreSession::options_for(const Scene& scene, const ChapterApp::Invocation& inv) const {
@@ -260,7 +273,6 @@ void ExploreSession::publish(std::shared_ptr<ExploreFrame> frame) {
     {
         std::lock_guard lock(mutex_);
         frame_ = std::move(frame);
-        render_error_.clear();
     }
     framed_.notify_all();
 }
@@ -288,19 +300,28 @@ void ExploreSession::apply(Settings& taken) {
 }
 
 void ExploreSession::loop() {
-    std::uint64_t frames = 0, generation = 0;
+    std::uint64_t generation = 0;
     RenderOptions o;
     int samples = 0;
     bool fresh = false, ready = false;
+    bool settle = false;      // the change's first pass made: refine once the view is still
     double full_pass_ms = 0;  // of the last full-size pass: decides the preview's size
-    std::vector<double> sum;
+    // A pass's time runs from the hand-over of the one before, when this thread goes
+    // straight on, or from the change that woke it: all the time between two frames but the
+    // wait for work.
+    Clock::time_point handed = Clock::now();
     for (;;) {
         Settings taken;
         bool changed = false;
         std::uint64_t taking = 0;
+        Clock::time_point pass_start = handed;
         {
             std::unique_lock lock(mutex_);
-            changed_.wait(lock, [&] { return stop_ || dirty_ || (ready && samples < o.spp); });
+            const auto work = [&] { return stop_ || dirty_ || (ready && samples < o.spp); };
+            if (!work()) {
+                changed_.wait(lock, work);
+                pass_start = Clock::now();
+            }
             if (stop_) return;
             if (dirty_) {
                 taken = std::move(pending_);
@@ -329,49 +350,45 @@ void ExploreSession::loop() {
             o.sample_count = 1;
             samples = 0;
             fresh = true;
-            sum.assign(std::size_t(o.width) * std::size_t(o.height) * 3, 0.0);
+            settle = false;
         }
         if (!ready || samples >= o.spp) continue;
+        if (settle) {
+            settle = false;
+            std::unique_lock lock(mutex_);
+            const bool moved = changed_.wait_until(lock, handed + kSettle, [&] { return stop_ || dirty_; });
+            pass_start = handed = Clock::now();  // waiting is not the pass's time
+            if (moved) continue;
+        }
 
-        auto frame = std::make_shared<ExploreFrame>();
-        frame->generation = generation;
-        frame->target_samples = o.spp;
+        Pass pass;
+        pass.generation = generation;
+        pass.target_samples = o.spp;
         try {
             // After a change, a pass too slow to follow the mouse is first made at a half or
             // a quarter of the size (sample 0 only), then refined at full size.
             const int shrink = !fresh || full_pass_ms <= kQuickPassMs ? 1 : full_pass_ms <= 4 * kQuickPassMs ? 2 : 4;
-            RenderOptions pass = o;
+            RenderOptions po = o;
             // A pass that refines is dropped for a change; the first after a change is not:
             // while the mouse moves faster than passes finish, each shows a frame.
-            pass.cancel = fresh ? nullptr : &overtaken_;
+            po.cancel = fresh ? nullptr : &overtaken_;
+            settle = fresh;
             fresh = false;
-            pass.first_sample = shrink > 1 ? 0 : samples;
+            po.first_sample = shrink > 1 ? 0 : samples;
             // Each pass its own random numbers (a pixel's streams run in order, so pass k cannot
             // take sample k's numbers of one render): still the same for the same --seed.
-            pass.seed = o.seed ^ (std::uint64_t(pass.first_sample) * 0x9E3779B97F4A7C15ull);
-            pass.width = std::max(1, o.width / shrink);
-            pass.height = std::max(1, o.height / shrink);
+            po.seed = o.seed ^ (std::uint64_t(po.first_sample) * 0x9E3779B97F4A7C15ull);
+            po.width = std::max(1, o.width / shrink);
+            po.height = std::max(1, o.height / shrink);
             std::shared_lock read(scene_mutex_);
-            const RenderResult r = render(*scene_, pass);
+            pass.result = render(*scene_, po);
             read.unlock();
-            if (pass.cancel && overtaken_) continue;  // part of an image of a view that has gone
-            frame->width = pass.width;
-            frame->height = pass.height;
-            frame->render_ms = r.seconds * 1000;
-            const double rays = double(r.counters.total());
-            frame->mrays_per_s = r.seconds > 0 ? rays / r.seconds / 1e6 : 0;
-            frame->nodes_per_ray = rays > 0 ? double(r.counters.nodes_visited) / rays : 0;
-            frame->primitives_per_ray = rays > 0 ? double(r.counters.primitives_tested) / rays : 0;
-            if (shrink > 1) {
-                to_rgba(r.image, frame->rgba);
-            } else {
-                full_pass_ms = frame->render_ms;
-                for (std::size_t i = 0; i < r.image.pixels.size(); ++i)
-                    for (std::size_t c = 0; c < 3; ++c) sum[3 * i + c] += double(r.image.pixels[i][int(c)]);
-                ++samples;
-                mean_to_rgba(sum, samples, frame->rgba);
+            if (po.cancel && overtaken_) continue;  // part of an image of a view that has gone
+            pass.preview = shrink > 1;
+            if (!pass.preview) {
+                full_pass_ms = pass.result.seconds * 1000;
+                pass.samples = ++samples;
             }
-            frame->samples = samples;
         } catch (const std::exception& e) {
             // An unfinished exercise, say: the page shows why, and nothing more is tried
             // until something changes.
@@ -384,6 +401,59 @@ void ExploreSession::loop() {
             ready = false;
             continue;
         }
+        {
+            std::lock_guard lock(mutex_);
+            render_error_.clear();
+        }
+        // On to the finisher, once it has taken the pass before (it takes a few
+        // milliseconds; a pass tens): this thread starts the next pass meanwhile.
+        std::unique_lock lock(pass_mutex_);
+        passed_.wait(lock, [&] { return !pass_; });
+        handed = Clock::now();
+        pass.pass_ms = std::chrono::duration<double, std::milli>(handed - pass_start).count();
+        pass_ = std::move(pass);
+        lock.unlock();
+        passed_.notify_all();
+    }
+}
+
+void ExploreSession::finish_loop() {
+    std::uint64_t frames = 0, summed = 0;  // frames published; the generation `sum` holds
+    std::vector<double> sum;
+    for (;;) {
+        Pass pass;
+        {
+            std::unique_lock lock(pass_mutex_);
+            passed_.wait(lock, [&] { return finish_stop_ || pass_; });
+            if (!pass_) return;  // stopping, and nothing left
+            pass = std::move(*pass_);
+            pass_.reset();
+        }
+        passed_.notify_all();  // the render thread may hand on its next
+        const auto start = Clock::now();
+        auto frame = std::make_shared<ExploreFrame>();
+        const RenderResult& r = pass.result;
+        frame->generation = pass.generation;
+        frame->target_samples = pass.target_samples;
+        frame->width = r.image.width;
+        frame->height = r.image.height;
+        frame->render_ms = r.seconds * 1000;
+        frame->pass_ms = pass.pass_ms;
+        const double rays = double(r.counters.total());
+        frame->mrays_per_s = r.seconds > 0 ? rays / r.seconds / 1e6 : 0;
+        frame->nodes_per_ray = rays > 0 ? double(r.counters.nodes_visited) / rays : 0;
+        frame->primitives_per_ray = rays > 0 ? double(r.counters.primitives_tested) / rays : 0;
+        if (pass.preview) {
+            to_rgb(r.image, frame->rgb);
+        } else {
+            // The first sample of a change starts the sum again.
+            const std::size_t size = r.image.pixels.size() * 3;
+            if (pass.samples == 1 || summed != pass.generation || sum.size() != size) sum.assign(size, 0.0);
+            summed = pass.generation;
+            accumulate_to_rgb(r.image, sum, pass.samples, frame->rgb);
+        }
+        frame->samples = pass.samples;
+        frame->finish_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
         frame->id = ++frames;
         publish(std::move(frame));
     }

@@ -4,7 +4,9 @@
 // with a shared frame buffer"). The page's requests change them; the render thread applies
 // each change between passes, under an exclusive lock; a pass, and a pick, read the scene
 // under a shared one. So a pick never waits for a pass, and nothing a pass reads changes
-// under it.
+// under it. Each pass rendered goes on to a second thread, the finisher, which adds it to
+// the running sum, makes the 8-bit frame and publishes it while the next pass renders: a
+// frame's interval is its pass, not the pass and the finishing added.
 #include "app/app.hpp"
 #include "app/explore_frame.hpp"
 
@@ -61,7 +63,17 @@ private:
         std::optional<Camera> camera;
         bool options = false;
     };
+    // A pass rendered, handed from the render thread to the finisher.
+    struct Pass {
+        std::uint64_t generation = 0;
+        bool preview = false;  // smaller than the view, after a change: shown, not summed
+        int samples = 0;       // full-size passes of this generation so far, this one included
+        int target_samples = 0;
+        double pass_ms = 0;  // the render thread's time for it: render() and all around it
+        RenderResult result;
+    };
     void loop();
+    void finish_loop();             // the finisher
     void apply(Settings& pending);  // render thread
     RenderOptions options_for(const Scene& scene, const ChapterApp::Invocation& inv) const;
     void publish(std::shared_ptr<ExploreFrame> frame);
@@ -89,6 +101,14 @@ private:
     std::shared_ptr<Scene> scene_;
     ChapterApp::Invocation render_invocation_;
     std::thread thread_;
+
+    // The hand-over: one pass at most waits for the finisher (the render thread waits for
+    // the slot, so a slow finisher slows the passes instead of queueing them).
+    std::mutex pass_mutex_;
+    std::condition_variable passed_;  // a pass put in the slot, or taken out
+    std::optional<Pass> pass_;
+    bool finish_stop_ = false;
+    std::thread finisher_;
 };
 
 }  // namespace rt

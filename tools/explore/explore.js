@@ -5,7 +5,7 @@
 
 const $ = (id) => document.getElementById(id);
 const params = new URLSearchParams(location.search);
-const format = params.get('format') || 'rgba';  // how frames travel: rgba (chosen, see the book), png, jpeg
+const format = params.get('format') || 'rgb';  // how frames travel: rgb (chosen, see the book), rgba, png, jpeg
 
 // What the tests and ./lab bench explore read (tests/explore_browser_test.py, bench/explore_bench.py).
 const rtlab = window.rtlab = {
@@ -55,9 +55,21 @@ function setViewSize(w, h) {
   drawRays();
 }
 
+// rgb frames (3 bytes a pixel, a quarter fewer to send) made RGBA in a reused ImageData:
+// one 32-bit store a pixel (every browser here is little-endian: R is the lowest byte).
+let unpacked = null;
+function imageOf(buffer, w, h) {
+  if (format === 'rgba') return new ImageData(new Uint8ClampedArray(buffer), w, h);
+  if (!unpacked || unpacked.width !== w || unpacked.height !== h) unpacked = new ImageData(w, h);
+  const src = new Uint8Array(buffer), dst = new Uint32Array(unpacked.data.buffer);
+  for (let i = 0, j = 0; i < dst.length; ++i, j += 3)
+    dst[i] = 0xff000000 | (src[j + 2] << 16) | (src[j + 1] << 8) | src[j];
+  return unpacked;
+}
+
 async function drawFrame(buffer, w, h) {
-  if (format === 'rgba') {
-    const image = new ImageData(new Uint8ClampedArray(buffer), w, h);
+  if (format === 'rgba' || format === 'rgb') {
+    const image = imageOf(buffer, w, h);
     if (w === frameCanvas.width && h === frameCanvas.height) return frameContext.putImageData(image, 0, 0);
     scratch.width = w; scratch.height = h;
     scratch.getContext('2d').putImageData(image, 0, 0);
@@ -68,29 +80,42 @@ async function drawFrame(buffer, w, h) {
   }
 }
 
+// One request always waits at the server: the next frame's is sent as soon as this one's
+// headers come, so the server can answer it while this frame's bytes arrive and are drawn
+// (fetch, read, draw, fetch again would leave the server's new frame waiting for the page).
+function ask(after) {
+  const asked = performance.now();
+  return fetch(`/api/frame?after=${after}&format=${format}&wait=1000`)
+    .then((r) => ({r, asked}), (error) => ({error, asked}));
+}
+
 async function frameLoop() {
   let after = 0;
+  let next = ask(after);
   for (;;) {
     try {
-      const asked = performance.now();
-      const r = await fetch(`/api/frame?after=${after}&format=${format}&wait=1000`);
+      const {r, asked, error} = await next;
+      if (error) throw error;
       const renderError = r.headers.get('X-Render-Error');
       $('render-error').textContent = renderError ? `render: ${renderError}` : '';
-      if (r.status === 204) continue;
+      if (r.status === 204) { next = ask(after); continue; }
       if (!r.ok) throw new Error((await r.json()).error);
       const h = (k) => Number(r.headers.get(k));
       const headersAt = performance.now();
+      const id = h('X-Frame-Id');
+      if (id <= after) { r.body?.cancel(); next = ask(after); continue; }
+      after = id;
+      next = ask(after);
       const buffer = await r.arrayBuffer();
       const received = performance.now();
       const f = {
-        id: h('X-Frame-Id'), generation: h('X-Generation'), width: h('X-Width'), height: h('X-Height'),
+        id, generation: h('X-Generation'), width: h('X-Width'), height: h('X-Height'),
         samples: h('X-Samples'), target: h('X-Target-Samples'), renderMs: h('X-Render-Ms'),
+        passMs: h('X-Pass-Ms'), finishMs: h('X-Finish-Ms'),
         encodeMs: h('X-Encode-Ms'), mrays: h('X-Mrays'), bytes: buffer.byteLength,
         nodes: h('X-Nodes-Per-Ray'), primitives: h('X-Primitives-Per-Ray'),
         transferMs: received - headersAt, waitedMs: headersAt - asked,
       };
-      if (f.id <= after) continue;
-      after = f.id;
       const drawStart = performance.now();
       await drawFrame(buffer, f.width, f.height);
       const drawn = performance.now();
@@ -112,11 +137,13 @@ async function frameLoop() {
         `${f.primitives.toFixed(1)} primitives per ray`;
       $('samples').textContent = f.width < frameCanvas.width
         ? `preview ${f.width}×${f.height}` : `${f.samples}/${f.target} spp`;
-      $('timing').textContent = `render ${f.renderMs.toFixed(1)} · encode ${f.encodeMs.toFixed(1)} · ` +
+      $('timing').textContent = `render ${f.renderMs.toFixed(1)} (pass ${f.passMs.toFixed(1)}) · ` +
+        `finish ${f.finishMs.toFixed(1)} · encode ${f.encodeMs.toFixed(1)} · ` +
         `transfer ${f.transferMs.toFixed(1)} · draw ${f.drawMs.toFixed(1)} ms`;
     } catch (e) {
       $('render-error').textContent = `frames: ${e.message}`;
       await new Promise((done) => setTimeout(done, 500));
+      next = ask(after);
     }
   }
 }
@@ -453,8 +480,9 @@ function threeCamera() {
   return c;
 }
 
+let raysBlank = false;  // the 3D canvas shows no rays: a camera move need not draw it again
 function drawRays() {
-  if (!cam) return;
+  if (!cam || (!tree && raysBlank)) return;
   while (overlay.children.length) overlay.remove(overlay.children[0]);
   segments = [];
   if (tree) {
@@ -479,6 +507,7 @@ function drawRays() {
   }
   rtlab.raysDrawn = segments.length;
   rays.render(overlay, threeCamera());
+  raysBlank = !tree;
 }
 
 // Hovering a drawn ray: its kind, weight and radiance.
@@ -518,6 +547,7 @@ function warmUp() {
   const dot3 = new THREE.Mesh(new THREE.SphereGeometry(0.01, 8, 6), new THREE.MeshBasicMaterial({depthTest: false}));
   overlay.add(line, dot3);
   rays.render(overlay, threeCamera());
+  raysBlank = false;
 }
 
 (async () => {
