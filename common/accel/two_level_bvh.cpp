@@ -10,26 +10,42 @@ TwoLevelBvh::TwoLevelBvh(const SurfaceList& surfaces) {
     std::vector<Box> boxes;
     boxes.reserve(surfaces.size());
     for (const Surface& s : surfaces.surfaces()) boxes.push_back(s.bounding_box());
-    bvh_ = build_bvh(boxes, 2);
+    const FlatBvh bvh = build_bvh(boxes, 2);
+    wide_ = collapse<kWidth>(bvh);
+    items_ = bvh.items;
+    depth_ = bvh.depth;
 }
 
 bool TwoLevelBvh::hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
     // A scene of one surface (a mesh alone) needs no upper level: its own search is the whole.
     if (surfaces.size() == 1) return surfaces[SurfaceId(0)].hit(ray, interval, rec);
     HitRecord best = no_hit_before(interval.max);
-    const bool found = closest_hit(bvh_, ray, interval, [&](std::uint32_t k, Interval& iv) {
-        if (!hit_closer(surfaces[SurfaceId(bvh_.items[k])], ray, iv, best)) return false;
-        iv.max = best.t;
-        return true;
-    });
+    const bool found = closest_hit(
+        wide_, WideRay<kWidth>(ray), interval,
+        [&](std::uint32_t first, std::uint32_t count, Interval& iv) {
+            bool closer = false;
+            for (std::uint32_t k = first; k < first + count; ++k)
+                if (hit_closer(surfaces[SurfaceId(items_[k])], ray, iv, best)) {
+                    iv.max = best.t;
+                    closer = true;
+                }
+            return closer;
+        },
+        [](std::uint32_t) {});
     if (found) rec = best;
     return found;
 }
 
 bool TwoLevelBvh::occluded(const SurfaceList& surfaces, const Ray& ray, Interval interval) const {
     if (surfaces.size() == 1) return surfaces[SurfaceId(0)].occluded(ray, interval);
-    return any_hit(bvh_, ray, interval,
-                   [&](std::uint32_t k, Interval& iv) { return surfaces[SurfaceId(bvh_.items[k])].occluded(ray, iv); });
+    return any_hit(
+        wide_, WideRay<kWidth>(ray), interval,
+        [&](std::uint32_t first, std::uint32_t count, Interval& iv) {
+            for (std::uint32_t k = first; k < first + count; ++k)
+                if (surfaces[SurfaceId(items_[k])].occluded(ray, iv)) return true;
+            return false;
+        },
+        [](std::uint32_t) {});
 }
 
 namespace {
@@ -57,13 +73,13 @@ void for_each_mesh_accel(const SurfaceList& surfaces, F&& f) {
 }  // namespace
 
 std::size_t TwoLevelBvh::memory_bytes(const SurfaceList& surfaces) const {
-    std::size_t bytes = bvh_.memory_bytes();
+    std::size_t bytes = wide_.memory_bytes() + items_.size() * sizeof(std::uint32_t);
     for_each_mesh_accel(surfaces, [&](const MeshAccel& a) { bytes += a.memory_bytes(); });
     return bytes;
 }
 
 std::size_t TwoLevelBvh::node_count(const SurfaceList& surfaces) const {
-    std::size_t nodes = bvh_.nodes.size();
+    std::size_t nodes = wide_.nodes.size();
     for_each_mesh_accel(surfaces, [&](const MeshAccel& a) { nodes += a.wide.nodes.size(); });
     return nodes;
 }
