@@ -16,24 +16,56 @@ TwoLevelBvh::TwoLevelBvh(const SurfaceList& surfaces) {
     depth_ = bvh.depth;
 }
 
+namespace {
+
+// A sphere where it stands at the ray's time (chapter 18), as hit_record(Sphere) tests it.
+Sphere placed(const Sphere& sphere, const Ray& ray) {
+    return sphere.moves() ? sphere.at(ray.time) : sphere;
+}
+
+}  // namespace
+
 bool TwoLevelBvh::hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
     // A scene of one surface (a mesh alone) needs no upper level: its own search is the whole.
     if (surfaces.size() == 1) return surfaces[SurfaceId(0)].hit(ray, interval, rec);
     HitRecord best = no_hit_before(interval.max);
+    // A sphere's hit is kept as its t and surface only (all `closer` ranks by), and its whole
+    // record (point, normal, error) made once, for the sphere that wins: a ray through a row
+    // of spheres meets several on its way to the nearest, and the record is what costs.
+    const Surface* best_sphere = nullptr;
     const bool found = closest_hit(
         wide_, WideRay<kWidth>(ray), interval,
         [&](std::uint32_t first, std::uint32_t count, Interval& iv) {
-            bool closer = false;
-            for (std::uint32_t k = first; k < first + count; ++k)
-                if (hit_closer(surfaces[SurfaceId(items_[k])], ray, iv, best)) {
-                    iv.max = best.t;
-                    closer = true;
+            bool nearer = false;
+            for (std::uint32_t k = first; k < first + count; ++k) {
+                const Surface& surface = surfaces[SurfaceId(items_[k])];
+                if (const Sphere* sphere = std::get_if<Sphere>(&surface.shape)) {
+                    // hit_closer's test (a few ulps past the far end), without the record.
+                    SphereHit h;
+                    if (!rt::hit(placed(*sphere, ray), ray, Interval{iv.min, widen_far(iv.max)}, h) ||
+                        !closer(h.t, surface.id, kNone, best))
+                        continue;
+                    best.t = h.t;
+                    best.surface = surface.id;
+                    best.primitive = kNone;
+                    best_sphere = &surface;
+                } else {
+                    if (!hit_closer(surface, ray, iv, best)) continue;
+                    best_sphere = nullptr;
                 }
-            return closer;
+                iv.max = best.t;
+                nearer = true;
+            }
+            return nearer;
         },
         [](std::uint32_t) {});
-    if (found) rec = best;
-    return found;
+    if (!found) return false;
+    if (best_sphere)
+        rec = record(placed(std::get<Sphere>(best_sphere->shape), ray), ray, SphereHit{best.t},
+                     SurfaceRef{best_sphere->id, best_sphere->material});
+    else
+        rec = best;
+    return true;
 }
 
 bool TwoLevelBvh::occluded(const SurfaceList& surfaces, const Ray& ray, Interval interval) const {
@@ -41,8 +73,16 @@ bool TwoLevelBvh::occluded(const SurfaceList& surfaces, const Ray& ray, Interval
     return any_hit(
         wide_, WideRay<kWidth>(ray), interval,
         [&](std::uint32_t first, std::uint32_t count, Interval& iv) {
-            for (std::uint32_t k = first; k < first + count; ++k)
-                if (surfaces[SurfaceId(items_[k])].occluded(ray, iv)) return true;
+            for (std::uint32_t k = first; k < first + count; ++k) {
+                const Surface& surface = surfaces[SurfaceId(items_[k])];
+                // Spheres, most of what such scenes hold, straight to their test.
+                if (const Sphere* sphere = std::get_if<Sphere>(&surface.shape)) {
+                    SphereHit h;
+                    if (rt::hit(placed(*sphere, ray), ray, iv, h)) return true;
+                } else if (surface.occluded(ray, iv)) {
+                    return true;
+                }
+            }
             return false;
         },
         [](std::uint32_t) {});
