@@ -23,6 +23,11 @@ Sphere placed(const Sphere& sphere, const Ray& ray) {
     return sphere.moves() ? sphere.at(ray.time) : sphere;
 }
 
+// Its test there; one that does not move is tested in place, not copied first.
+bool hit_placed(const Sphere& sphere, const Ray& ray, Interval interval, SphereHit& h) {
+    return sphere.moves() ? rt::hit(sphere.at(ray.time), ray, interval, h) : rt::hit(sphere, ray, interval, h);
+}
+
 }  // namespace
 
 bool TwoLevelBvh::hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
@@ -42,7 +47,7 @@ bool TwoLevelBvh::hit(const SurfaceList& surfaces, const Ray& ray, Interval inte
                 if (const Sphere* sphere = std::get_if<Sphere>(&surface.shape)) {
                     // hit_closer's test (a few ulps past the far end), without the record.
                     SphereHit h;
-                    if (!rt::hit(placed(*sphere, ray), ray, Interval{iv.min, widen_far(iv.max)}, h) ||
+                    if (!hit_placed(*sphere, ray, Interval{iv.min, widen_far(iv.max)}, h) ||
                         !closer(h.t, surface.id, kNone, best))
                         continue;
                     best.t = h.t;
@@ -78,7 +83,7 @@ bool TwoLevelBvh::occluded(const SurfaceList& surfaces, const Ray& ray, Interval
                 // Spheres, most of what such scenes hold, straight to their test.
                 if (const Sphere* sphere = std::get_if<Sphere>(&surface.shape)) {
                     SphereHit h;
-                    if (rt::hit(placed(*sphere, ray), ray, iv, h)) return true;
+                    if (hit_placed(*sphere, ray, iv, h)) return true;
                 } else if (surface.occluded(ray, iv)) {
                     return true;
                 }
