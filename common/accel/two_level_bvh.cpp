@@ -14,49 +14,42 @@ TwoLevelBvh::TwoLevelBvh(const SurfaceList& surfaces) {
     wide_ = collapse<kWidth>(bvh);
     items_ = bvh.items;
     depth_ = bvh.depth;
+    spheres_.reserve(items_.size());
+    for (std::uint32_t item : items_) {
+        const Sphere* sphere = std::get_if<Sphere>(&surfaces[SurfaceId(item)].shape);
+        spheres_.push_back(sphere && !sphere->moves() ? std::optional<Sphere>(*sphere) : std::nullopt);
+    }
 }
 
-namespace {
-
-// A sphere where it stands at the ray's time (chapter 18), as hit_record(Sphere) tests it.
-Sphere placed(const Sphere& sphere, const Ray& ray) {
-    return sphere.moves() ? sphere.at(ray.time) : sphere;
-}
-
-// Its test there; one that does not move is tested in place, not copied first.
-bool hit_placed(const Sphere& sphere, const Ray& ray, Interval interval, SphereHit& h) {
-    return sphere.moves() ? rt::hit(sphere.at(ray.time), ray, interval, h) : rt::hit(sphere, ray, interval, h);
-}
-
-}  // namespace
-
+// A surface's id is its place in the list (SurfaceList::add), so a slot's item number is the
+// id a still sphere's hit carries, and the sphere's own surface is read only for the record
+// of the one that wins.
 bool TwoLevelBvh::hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
     // A scene of one surface (a mesh alone) needs no upper level: its own search is the whole.
     if (surfaces.size() == 1) return surfaces[SurfaceId(0)].hit(ray, interval, rec);
     HitRecord best = no_hit_before(interval.max);
-    // A sphere's hit is kept as its t and surface only (all `closer` ranks by), and its whole
-    // record (point, normal, error) made once, for the sphere that wins: a ray through a row
-    // of spheres meets several on its way to the nearest, and the record is what costs.
-    const Surface* best_sphere = nullptr;
+    // A still sphere's hit is kept as its t and surface only (all `closer` ranks by), and its
+    // whole record (point, normal, error) made once, for the sphere that wins: a ray through a
+    // row of spheres meets several on its way to the nearest, and the record is what costs.
+    std::uint32_t best_sphere = kNone;  // its slot
     const bool found = closest_hit(
         wide_, WideRay<kWidth>(ray), interval,
         [&](std::uint32_t first, std::uint32_t count, Interval& iv) {
             bool nearer = false;
             for (std::uint32_t k = first; k < first + count; ++k) {
-                const Surface& surface = surfaces[SurfaceId(items_[k])];
-                if (const Sphere* sphere = std::get_if<Sphere>(&surface.shape)) {
+                if (const std::optional<Sphere>& sphere = spheres_[k]) {
                     // hit_closer's test (a few ulps past the far end), without the record.
                     SphereHit h;
-                    if (!hit_placed(*sphere, ray, Interval{iv.min, widen_far(iv.max)}, h) ||
-                        !closer(h.t, surface.id, kNone, best))
+                    if (!rt::hit(*sphere, ray, Interval{iv.min, widen_far(iv.max)}, h) ||
+                        !closer(h.t, SurfaceId(items_[k]), kNone, best))
                         continue;
                     best.t = h.t;
-                    best.surface = surface.id;
+                    best.surface = SurfaceId(items_[k]);
                     best.primitive = kNone;
-                    best_sphere = &surface;
+                    best_sphere = k;
                 } else {
-                    if (!hit_closer(surface, ray, iv, best)) continue;
-                    best_sphere = nullptr;
+                    if (!hit_closer(surfaces[SurfaceId(items_[k])], ray, iv, best)) continue;
+                    best_sphere = kNone;
                 }
                 iv.max = best.t;
                 nearer = true;
@@ -65,11 +58,12 @@ bool TwoLevelBvh::hit(const SurfaceList& surfaces, const Ray& ray, Interval inte
         },
         [](std::uint32_t) {});
     if (!found) return false;
-    if (best_sphere)
-        rec = record(placed(std::get<Sphere>(best_sphere->shape), ray), ray, SphereHit{best.t},
-                     SurfaceRef{best_sphere->id, best_sphere->material});
-    else
+    if (best_sphere != kNone) {
+        const Surface& surface = surfaces[SurfaceId(items_[best_sphere])];
+        rec = record(*spheres_[best_sphere], ray, SphereHit{best.t}, SurfaceRef{surface.id, surface.material});
+    } else {
         rec = best;
+    }
     return true;
 }
 
@@ -79,12 +73,10 @@ bool TwoLevelBvh::occluded(const SurfaceList& surfaces, const Ray& ray, Interval
         wide_, WideRay<kWidth>(ray), interval,
         [&](std::uint32_t first, std::uint32_t count, Interval& iv) {
             for (std::uint32_t k = first; k < first + count; ++k) {
-                const Surface& surface = surfaces[SurfaceId(items_[k])];
-                // Spheres, most of what such scenes hold, straight to their test.
-                if (const Sphere* sphere = std::get_if<Sphere>(&surface.shape)) {
+                if (const std::optional<Sphere>& sphere = spheres_[k]) {
                     SphereHit h;
-                    if (hit_placed(*sphere, ray, iv, h)) return true;
-                } else if (surface.occluded(ray, iv)) {
+                    if (rt::hit(*sphere, ray, iv, h)) return true;
+                } else if (surfaces[SurfaceId(items_[k])].occluded(ray, iv)) {
                     return true;
                 }
             }
@@ -118,7 +110,8 @@ void for_each_mesh_accel(const SurfaceList& surfaces, F&& f) {
 }  // namespace
 
 std::size_t TwoLevelBvh::memory_bytes(const SurfaceList& surfaces) const {
-    std::size_t bytes = wide_.memory_bytes() + items_.size() * sizeof(std::uint32_t);
+    std::size_t bytes =
+        wide_.memory_bytes() + items_.size() * sizeof(std::uint32_t) + spheres_.size() * sizeof(spheres_[0]);
     for_each_mesh_accel(surfaces, [&](const MeshAccel& a) { bytes += a.memory_bytes(); });
     return bytes;
 }

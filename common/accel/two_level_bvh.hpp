@@ -9,6 +9,7 @@
 #include "core/wide_bvh.hpp"
 
 #include <cstdint>
+#include <optional>
 #include <vector>
 
 namespace rt {
@@ -32,6 +33,10 @@ public:
 private:
     WideBvh<kWidth> wide_;
     std::vector<std::uint32_t> items_;  // surface numbers, leaf after leaf (a leaf holds a run of them)
+    // Slot by slot, a copy of the item if it is a sphere that does not move (what scenes of
+    // spheres are made of), tested straight from here: a sphere's 56 bytes side by side in
+    // leaf order, instead of a variant dispatch through surfaces a few hundred bytes apart.
+    std::vector<std::optional<Sphere>> spheres_;
     int depth_ = 0;
 };
 
