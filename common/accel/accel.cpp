@@ -77,7 +77,7 @@ Accel::Accel(const SurfaceList& surfaces, AccelKind kind)
             info_.primitives = primitives_of(surfaces).size();
             info_.nodes = f.node_count(surfaces);
             info_.bytes = f.memory_bytes(surfaces);
-            info_.depth = f.upper().depth;
+            info_.depth = f.depth();
         });
 }
 

@@ -10,26 +10,79 @@ TwoLevelBvh::TwoLevelBvh(const SurfaceList& surfaces) {
     std::vector<Box> boxes;
     boxes.reserve(surfaces.size());
     for (const Surface& s : surfaces.surfaces()) boxes.push_back(s.bounding_box());
-    bvh_ = build_bvh(boxes, 2);
+    const FlatBvh bvh = build_bvh(boxes, 2);
+    wide_ = collapse<kWidth>(bvh);
+    items_ = bvh.items;
+    depth_ = bvh.depth;
+    spheres_.reserve(items_.size());
+    for (std::uint32_t item : items_) {
+        const Sphere* sphere = std::get_if<Sphere>(&surfaces[SurfaceId(item)].shape);
+        spheres_.push_back(sphere && !sphere->moves() ? std::optional<Sphere>(*sphere) : std::nullopt);
+    }
 }
 
+// A surface's id is its place in the list (SurfaceList::add), so a slot's item number is the
+// id a still sphere's hit carries, and the sphere's own surface is read only for the record
+// of the one that wins.
 bool TwoLevelBvh::hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
     // A scene of one surface (a mesh alone) needs no upper level: its own search is the whole.
     if (surfaces.size() == 1) return surfaces[SurfaceId(0)].hit(ray, interval, rec);
     HitRecord best = no_hit_before(interval.max);
-    const bool found = closest_hit(bvh_, ray, interval, [&](std::uint32_t k, Interval& iv) {
-        if (!hit_closer(surfaces[SurfaceId(bvh_.items[k])], ray, iv, best)) return false;
-        iv.max = best.t;
-        return true;
-    });
-    if (found) rec = best;
-    return found;
+    // A still sphere's hit is kept as its t and surface only (all `closer` ranks by), and its
+    // whole record (point, normal, error) made once, for the sphere that wins: a ray through a
+    // row of spheres meets several on its way to the nearest, and the record is what costs.
+    std::uint32_t best_sphere = kNone;  // its slot
+    const bool found = closest_hit(
+        wide_, WideRay<kWidth>(ray), interval,
+        [&](std::uint32_t first, std::uint32_t count, Interval& iv) {
+            bool nearer = false;
+            for (std::uint32_t k = first; k < first + count; ++k) {
+                if (const std::optional<Sphere>& sphere = spheres_[k]) {
+                    // hit_closer's test (a few ulps past the far end), without the record.
+                    SphereHit h;
+                    if (!rt::hit(*sphere, ray, Interval{iv.min, widen_far(iv.max)}, h) ||
+                        !closer(h.t, SurfaceId(items_[k]), kNone, best))
+                        continue;
+                    best.t = h.t;
+                    best.surface = SurfaceId(items_[k]);
+                    best.primitive = kNone;
+                    best_sphere = k;
+                } else {
+                    if (!hit_closer(surfaces[SurfaceId(items_[k])], ray, iv, best)) continue;
+                    best_sphere = kNone;
+                }
+                iv.max = best.t;
+                nearer = true;
+            }
+            return nearer;
+        },
+        [](std::uint32_t) {});
+    if (!found) return false;
+    if (best_sphere != kNone) {
+        const Surface& surface = surfaces[SurfaceId(items_[best_sphere])];
+        rec = record(*spheres_[best_sphere], ray, SphereHit{best.t}, SurfaceRef{surface.id, surface.material});
+    } else {
+        rec = best;
+    }
+    return true;
 }
 
 bool TwoLevelBvh::occluded(const SurfaceList& surfaces, const Ray& ray, Interval interval) const {
     if (surfaces.size() == 1) return surfaces[SurfaceId(0)].occluded(ray, interval);
-    return any_hit(bvh_, ray, interval,
-                   [&](std::uint32_t k, Interval& iv) { return surfaces[SurfaceId(bvh_.items[k])].occluded(ray, iv); });
+    return any_hit(
+        wide_, WideRay<kWidth>(ray), interval,
+        [&](std::uint32_t first, std::uint32_t count, Interval& iv) {
+            for (std::uint32_t k = first; k < first + count; ++k) {
+                if (const std::optional<Sphere>& sphere = spheres_[k]) {
+                    SphereHit h;
+                    if (rt::hit(*sphere, ray, iv, h)) return true;
+                } else if (surfaces[SurfaceId(items_[k])].occluded(ray, iv)) {
+                    return true;
+                }
+            }
+            return false;
+        },
+        [](std::uint32_t) {});
 }
 
 namespace {
@@ -57,13 +110,14 @@ void for_each_mesh_accel(const SurfaceList& surfaces, F&& f) {
 }  // namespace
 
 std::size_t TwoLevelBvh::memory_bytes(const SurfaceList& surfaces) const {
-    std::size_t bytes = bvh_.memory_bytes();
+    std::size_t bytes =
+        wide_.memory_bytes() + items_.size() * sizeof(std::uint32_t) + spheres_.size() * sizeof(spheres_[0]);
     for_each_mesh_accel(surfaces, [&](const MeshAccel& a) { bytes += a.memory_bytes(); });
     return bytes;
 }
 
 std::size_t TwoLevelBvh::node_count(const SurfaceList& surfaces) const {
-    std::size_t nodes = bvh_.nodes.size();
+    std::size_t nodes = wide_.nodes.size();
     for_each_mesh_accel(surfaces, [&](const MeshAccel& a) { nodes += a.wide.nodes.size(); });
     return nodes;
 }
