@@ -522,7 +522,7 @@ int main(int argc, char** argv) {
     for (Input& in : inputs)
         for (Vec3& p : in.mesh.positions) p = Vec3(round_to_float(p.x), round_to_float(p.y), round_to_float(p.z));
     std::printf(
-        "lab: Real=%s, fast path (two-level: 8-wide float BVH with 4-triangle blocks in each mesh, binary over the "
+        "lab: Real=%s, fast path (two-level: 8-wide float BVH with 4-triangle blocks in each mesh, 8-wide over the "
         "surfaces); Embree %d.%d.%d, "
         "rtcIntersect1/rtcOccluded1\n",
         real_name(), RTC_VERSION_MAJOR, RTC_VERSION_MINOR, RTC_VERSION_PATCH);

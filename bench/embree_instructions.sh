@@ -5,13 +5,12 @@
 # those casts. Unlike times, the counts are the same in every run, on a loaded machine too.
 #
 #   bench/embree_instructions.sh BIN N [bench_embree options] [MESH.obj ...]
-#   e.g. bench/embree_instructions.sh build/cg/bin/bench_embree 1 --no-procedural BUNNY.obj
+#   e.g. bench/embree_instructions.sh build/profile/bin/bench_embree 1 --no-procedural BUNNY.obj
 #
 # Debian 12's valgrind (3.19) cannot run AVX-512 instructions, which the release preset's
-# -march=native emits on a processor that has them; build BIN for AVX2 instead, as release
-# is otherwise (the counts are then those of the AVX2 code):
-#   cmake -S . -B build/cg -G Ninja -DCMAKE_BUILD_TYPE=Release -DRTLAB_IPO=ON -DRTLAB_NATIVE=OFF \
-#       -DCMAKE_CXX_FLAGS=-march=x86-64-v3 && cmake --build build/cg --target bench_embree
+# -march=native emits on a processor that has them; build BIN with the profile preset
+# instead (release for AVX2: the counts are then those of the AVX2 code):
+#   cmake --preset profile && cmake --build build/profile --target bench_embree
 set -euo pipefail
 (($# >= 2)) || { echo "usage: bench/embree_instructions.sh BIN N [bench_embree options] [MESH.obj ...]" >&2; exit 2; }
 bin=$1 n=$2

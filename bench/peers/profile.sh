@@ -1,19 +1,20 @@
 #!/usr/bin/env bash
-# Where rtlab's time goes on the sphere scene with the glass made mirrors (the scene where
-# Tachyon is the faster, book §10.10): callgrind's instructions per function, per ray of the
+# Where rtlab's time goes on the sphere scene with the glass made mirrors (the scene closest
+# to Tachyon's ground, book §10.10): callgrind's instructions per function, per ray of the
 # render (camera, shadow and reflection rays together) and in all.
 #
-#   bench/peers/profile.sh BIN_DIR [WxH]     e.g. bench/peers/profile.sh build/portable/bin 640x360
+#   bench/peers/profile.sh BIN_DIR [WxH]     e.g. bench/peers/profile.sh build/profile/bin 640x360
 #
-# BIN_DIR must be a build without -march=native (the portable preset): valgrind cannot run
-# AVX-512 instructions. Instructions, not time: the same in every run on a loaded machine.
+# BIN_DIR must be a build without -march=native: valgrind cannot run AVX-512 instructions.
+# The profile preset builds for AVX2, which the release build's search uses too; the portable
+# preset has neither AVX2 nor popcnt, so its counts are of other code. Instructions, not time: the same in every run on a loaded machine.
 set -euo pipefail
 cd "$(dirname "$0")/../.."
 (($# >= 1 && $# <= 2)) || { echo "usage: bench/peers/profile.sh BIN_DIR [WxH]" >&2; exit 2; }
 bin=$1 size=${2-640x360}
 [[ $size =~ ^([1-9][0-9]*)x([1-9][0-9]*)$ ]] || { echo "profile.sh: size must be WxH, not '$size'" >&2; exit 2; }
 w=${BASH_REMATCH[1]} h=${BASH_REMATCH[2]}
-[[ -x $bin/ch10 ]] || { echo "profile.sh: no chapter program $bin/ch10 (build the portable preset)" >&2; exit 2; }
+[[ -x $bin/ch10 ]] || { echo "profile.sh: no chapter program $bin/ch10 (build the profile preset)" >&2; exit 2; }
 command -v valgrind >/dev/null || { echo "profile.sh: valgrind is not installed" >&2; exit 2; }
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
