@@ -304,14 +304,23 @@ def ch18(bin_dir, out_dir):
     with tempfile.TemporaryDirectory() as tmp:
         s, _ = stats(ch18, without(balls, "moves_to", tmp))
     ms, ss = m["search"], s["search"]
-    need(ms["nodes_per_ray"] > ss["nodes_per_ray"] and ms["primitives_per_ray"] > ss["primitives_per_ray"],
-         "the swept boxes make the search visit more nodes and test more primitives per ray")
+    need(ms["nodes_per_ray"] >= ss["nodes_per_ray"] and ms["primitives_per_ray"] > ss["primitives_per_ray"],
+         "the swept boxes make the search test more primitives per ray, and no fewer boxes")
     more = ms["primitives_per_ray"] / ss["primitives_per_ray"] - 1
-    write(out_dir, "ch18-swept-box.md",
-          [f"With `--stats`, the search visits {ms['nodes_per_ray']:.2f} nodes and tests "
-           f"{ms['primitives_per_ray']:.3f} primitives per ray in `balls`, against {ss['nodes_per_ray']:.2f} and "
-           f"{ss['primitives_per_ray']:.3f} in the still copy. That is {100 * more:.0f} % more primitive tests per "
-           "ray, for two balls that move 1 and 2 units."])
+    if ms["nodes_per_ray"] > ss["nodes_per_ray"]:
+        sentence = (f"With `--stats`, the search visits {ms['nodes_per_ray']:.2f} nodes and tests "
+                    f"{ms['primitives_per_ray']:.3f} primitives per ray in `balls`, against {ss['nodes_per_ray']:.2f} and "
+                    f"{ss['primitives_per_ray']:.3f} in the still copy. That is {100 * more:.0f} % more primitive tests per "
+                    "ray, for two balls that move 1 and 2 units.")
+    else:
+        # A scene of a few spheres is one wide node: every ray tests its eight boxes, swept or not.
+        need(m["accel"]["nodes"] == 1 and s["accel"]["nodes"] == 1, "the same boxes per ray only when one node holds all")
+        sentence = (f"With `--stats`, the search tests {ms['primitives_per_ray']:.3f} primitives per ray in `balls`, "
+                    f"against {ss['primitives_per_ray']:.3f} in the still copy: {100 * more:.0f} % more, for two balls "
+                    f"that move 1 and 2 units. The boxes it tests are {ms['nodes_per_ray']:.0f} per ray in both: the "
+                    f"{m['accel']['primitives']} surfaces fit under one node of eight boxes (§10.5), so what the larger "
+                    "boxes cost shows in the spheres tested, not in the boxes.")
+    write(out_dir, "ch18-swept-box.md", [sentence])
     need(m["random_numbers"]["time"] == m["rays"]["camera"], "one time number per camera ray in balls")
     need(s["random_numbers"]["time"] == 0, "no time number when nothing moves")
     write(out_dir, "ch18-time-numbers.md",
