@@ -17,7 +17,6 @@ import time
 
 from selenium.webdriver.common.action_chains import ActionChains
 from selenium.webdriver.common.by import By
-from selenium.webdriver.support.ui import Select
 
 sys.path.insert(0, str(pathlib.Path(__file__).parent))
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "tools"))
@@ -88,20 +87,29 @@ try:
     check(camera["eye"] != [-1.4, 1.7, 3.4], f"the server's camera moved: {camera['eye']}")
 
     # The controls: an option the parser refuses shows its line; a shading goes into the file.
-    Select(driver.find_element(By.ID, "pattern")).select_by_value("jittered")
-    def set_field(key, value):  # as typed, then left: one change event
+    # Each control is set and its change event fired in one script: the page rebuilds its
+    # selects' options whenever the server's state comes back, so an option element found
+    # first and clicked after can be gone by then (selenium's StaleElementReferenceException,
+    # seen once in CI under ASan).
+    def set_field(key, value):  # as typed or chosen, then left: one change event
         driver.execute_script("const e = document.getElementById(arguments[0]); e.value = arguments[1];"
                               "e.dispatchEvent(new Event('change'))", key, value)
 
+    set_field("pattern", "jittered")
+    check(driver.execute_script("return document.getElementById('pattern').value") == "jittered",
+          "the pattern control offers jittered")
     set_field("spp", "3")
     refused = wait_for(driver, "const e = document.getElementById('error').textContent; return e.includes('n x n') && e", 30)
     check(refused, f"--spp 3 with the jittered pattern is refused in the page: {refused!r}")
     set_field("spp", "4")
     check(wait_for(driver, "return document.getElementById('error').textContent === ''", 30), "--spp 4 is taken")
     generation = driver.execute_script("return window.rtlab.generation")
-    Select(driver.find_element(By.ID, "shading")).select_by_value("cost")
+    set_field("shading", "cost")
     check(wait_for(driver, f"return window.rtlab.generation > {generation}", 60), "a shading change renders")
-    check('"shading": "cost"' in driver.find_element(By.ID, "text").get_attribute("value"), "and is in the scene file")
+    # The text is rewritten when the server has taken the scene, which can be after the first
+    # frame of it is shown: wait for it, or the edit below could be overwritten by it.
+    check(wait_for(driver, "return document.getElementById('text').value.includes('\"shading\": \"cost\"')", 30),
+          "and is in the scene file")
 
     # A broken scene file: the loader's line, and the view keeps the last good scene.
     driver.execute_script("document.getElementById('text').value = "

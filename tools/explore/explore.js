@@ -290,10 +290,19 @@ for (const id of ['fov', 'aperture', 'focus', 'lens', 'shutter-open', 'shutter-c
   $(id).addEventListener('change', readCameraControls);
 
 // ---- command-line options: every control is one option, read by the chapter's parser ----
-async function sendOptions() {
+// The controls are read when one changes, and the sends go to the server one after another:
+// two quick changes sent at once could come back in either order, and the first's success
+// would then wipe the second's refusal from the page (and its state reload would overwrite
+// a value the user had just typed).
+let optionsSent = Promise.resolve();
+function sendOptions() {
   const args = [];
   for (const el of document.querySelectorAll('[data-option]'))
     if (el.value !== '') args.push(el.dataset.option, el.value);
+  optionsSent = optionsSent.then(() => postOptions(args));
+  return optionsSent;
+}
+async function postOptions(args) {
   try {
     await post('/api/options', args);
     $('error').textContent = '';
