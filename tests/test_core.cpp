@@ -43,6 +43,33 @@ TEST_CASE("Sampler: only a sample's first point in a dimension takes its stratum
     CHECK_FALSE(plain.take_stratum(Dimension::lens));
 }
 
+TEST_CASE("Sampler: one moved from pixel to pixel draws what a new one for each pixel draws") {
+    // The render loop keeps one sampler per tile (render/render.cpp): its streams are seeded
+    // at their first draw and its strata orders shuffled again for each pixel, so every image
+    // is what a sampler per pixel made. Pixels that draw nothing in a dimension are between
+    // ones that do, and the reused sampler is moved on from a pixel mid-sample.
+    const auto draws = [](Sampler& s, std::uint64_t pixel) {
+        std::vector<double> out;
+        s.set_strata(9, 3, Strata::jittered);
+        for (int k = 0; k < 9; ++k) {
+            s.start_sample(k);
+            const Vec2 film = sample_square(s, Dimension::pixel);
+            out.insert(out.end(), {double(film.x), double(film.y)});
+            if (pixel % 3 != 1) {  // every third pixel leaves the lens and light dimensions alone
+                const Vec2 lens = sample_square(s, Dimension::lens);
+                out.insert(out.end(), {double(lens.x), double(lens.y), double(s.get1(Dimension::light))});
+            }
+        }
+        return out;
+    };
+    Sampler reused(11, 0);
+    for (std::uint64_t pixel = 40; pixel < 52; ++pixel) {
+        reused.start_pixel(pixel);
+        Sampler fresh(11, pixel);
+        CHECK(draws(reused, pixel) == draws(fresh, pixel));
+    }
+}
+
 TEST_CASE("Sampler: a second point in a dimension is independent of the first") {
     // Two glossy points per sample, 16 jittered samples per pixel, over 2,000 pixels: if the
     // second took the first's stratum, x1 and x2 would share a quarter of [0, 1), and E[x1 x2]
