@@ -452,6 +452,16 @@ void measure(const Input& input, int size, int frame, int rounds, bool classes, 
         "  whole frame: %dx%d, \"shading\": \"normal\", 1 sample per pixel; %ld pixels show the mesh, "
         "Embree hits it with %ld of the same rays\n",
         frame, frame, shown, embree_hits);
+    // The same rays searched alone, in the same order, through the scene the render uses:
+    // what the frame would cost with nothing around its searches (the rest is the gap
+    // between this row and the next).
+    row(
+        "frame rays, search", camera,
+        [&](const Ray& r) {
+            HitRecord rec;
+            return scene.hit(r, Interval{}, rec);
+        },
+        embree_primary);
     for (int threads : {1, 2}) {
         options.threads = threads;
         double lab = 1e30, emb = 1e30;

@@ -24,9 +24,7 @@ TwoLevelBvh::TwoLevelBvh(const SurfaceList& surfaces) {
 // A surface's id is its place in the list (SurfaceList::add), so a slot's item number is the
 // id a still sphere's hit carries, and the sphere's own surface is read only for the record
 // of the one that wins.
-bool TwoLevelBvh::hit(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
-    // A scene of one surface (a mesh alone) needs no upper level: its own search is the whole.
-    if (surfaces.size() == 1) return surfaces[SurfaceId(0)].hit(ray, interval, rec);
+bool TwoLevelBvh::hit_upper(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const {
     HitRecord best = no_hit_before(interval.max);
     // A still sphere's hit is kept as its t and surface only (all `closer` ranks by), and its
     // whole record (point, normal, error) made once, for the sphere that wins: a ray through a
@@ -67,8 +65,7 @@ bool TwoLevelBvh::hit(const SurfaceList& surfaces, const Ray& ray, Interval inte
     return true;
 }
 
-bool TwoLevelBvh::occluded(const SurfaceList& surfaces, const Ray& ray, Interval interval) const {
-    if (surfaces.size() == 1) return surfaces[SurfaceId(0)].occluded(ray, interval);
+bool TwoLevelBvh::occluded_upper(const SurfaceList& surfaces, const Ray& ray, Interval interval) const {
     return any_hit(
         wide_, WideRay<kWidth>(ray), interval,
         [&](std::uint32_t first, std::uint32_t count, Interval& iv) {

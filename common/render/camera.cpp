@@ -5,15 +5,6 @@
 
 namespace rt {
 
-Ray View::ray(const CameraSample& sample) const {
-    const Vec2 uv = window_point(sample.film.x, sample.film.y, nx, ny, window);
-    Ray r = projection == Projection::orthographic ? orthographic_ray(eye, uvw, uv)
-            : has_lens() ? thin_lens_ray(eye, uvw, focal_distance, uv, aperture, focus, sample.lens)
-                         : perspective_ray(eye, uvw, focal_distance, uv);
-    r.time = sample.time;
-    return r;
-}
-
 void Camera::validate() const {
     const Vec3 view_direction = target - eye;
     if (view_direction == Vec3(0)) throw std::invalid_argument("camera: eye and target are the same point");

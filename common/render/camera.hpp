@@ -90,7 +90,15 @@ struct View {
 
     bool has_lens() const { return aperture > 0; }
 
-    Ray ray(const CameraSample& sample) const;
+    // Inline: the render loop calls it once per camera ray.
+    Ray ray(const CameraSample& sample) const {
+        const Vec2 uv = window_point(sample.film.x, sample.film.y, nx, ny, window);
+        Ray r = projection == Projection::orthographic ? orthographic_ray(eye, uvw, uv)
+                : has_lens() ? thin_lens_ray(eye, uvw, focal_distance, uv, aperture, focus, sample.lens)
+                             : perspective_ray(eye, uvw, focal_distance, uv);
+        r.time = sample.time;
+        return r;
+    }
     // Through the centre of pixel (i, j) and of the lens, at the shutter's opening.
     Ray pixel_ray(int i, int j) const {
         return ray({Vec2(Real(i) + Real(0.5), Real(j) + Real(0.5)), Vec2(0), shutter_open});

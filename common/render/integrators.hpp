@@ -18,14 +18,14 @@ inline Color direction_color(const Vec3& d) {
 }
 
 // Colour = the ray's direction. No geometry is consulted.
-class RayDirectionIntegrator : public Integrator {
+class RayDirectionIntegrator : public IntegratorOf<RayDirectionIntegrator> {
 public:
     Color Li(const Scene&, const Ray& ray, TraceContext&) const override { return direction_color(ray.direction); }
 };
 
 // Colour = where the ray starts, relative to the eye, in units of `extent` (the view
 // window's size): the only thing that varies across an orthographic view.
-class RayOriginIntegrator : public Integrator {
+class RayOriginIntegrator : public IntegratorOf<RayOriginIntegrator> {
 public:
     RayOriginIntegrator(Vec3 eye, Real extent) : eye_(eye), extent_(extent) {}
     Color Li(const Scene&, const Ray& ray, TraceContext&) const override {
@@ -38,7 +38,7 @@ private:
 };
 
 // Colour = the unit normal at the first hit, or the background.
-class NormalIntegrator : public Integrator {
+class NormalIntegrator : public IntegratorOf<NormalIntegrator> {
 public:
     Color Li(const Scene& scene, const Ray& ray, TraceContext&) const override {
         HitRecord rec;
@@ -49,7 +49,7 @@ public:
 
 // Colour = the barycentric coordinates (1 - beta - gamma, beta, gamma) of a triangle hit;
 // other surfaces show their normal.
-class BarycentricIntegrator : public Integrator {
+class BarycentricIntegrator : public IntegratorOf<BarycentricIntegrator> {
 public:
     Color Li(const Scene& scene, const Ray& ray, TraceContext&) const override {
         HitRecord rec;
@@ -62,7 +62,7 @@ public:
 // Colour = what finding the first hit cost (book §10.6): boxes plus primitives tested for
 // the camera ray, on a heat scale from black (nothing) through blue and red to yellow at
 // `full` tests and beyond. Pictures where a structure spends its time.
-class CostIntegrator : public Integrator {
+class CostIntegrator : public IntegratorOf<CostIntegrator> {
 public:
     explicit CostIntegrator(float full = 256) : full_(full) {}
     Color Li(const Scene& scene, const Ray& ray, TraceContext&) const override;
@@ -73,7 +73,7 @@ private:
 
 // The ray tracing program of course §9.4: ambient + Lambert + Blinn-Phong for every light,
 // no shadows yet. Highlights are computed only for materials that have a specular colour.
-class PhongIntegrator : public Integrator {
+class PhongIntegrator : public IntegratorOf<PhongIntegrator> {
 public:
     Color Li(const Scene& scene, const Ray& ray, TraceContext& context) const override {
         HitRecord rec;

@@ -119,6 +119,12 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
         throw std::invalid_argument("samples " + std::to_string(first) + "+" + std::to_string(count) +
                                     " are not samples of a " + std::to_string(o.spp) + "-sample pixel");
 
+    // One sample per pixel at its centre draws nothing and needs no sum (camera_sample,
+    // lens_and_time): chapters 01-13 at their default settings, and the explorer's passes.
+    // Such tiles go to the integrator whole (Integrator::trace_centre_tile).
+    const bool centre_only = count == 1 && o.spp == 1 && strata == Strata::none &&
+                             o.antialiasing.filter == PixelFilter::box && !view.has_lens() &&
+                             !(moving && view.shutter_open < view.shutter_close);
     const Integrator& integrator = *scene.integrator;
     RenderResult result;
     result.image = Image(o.width, o.height);
@@ -133,33 +139,36 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
         const int x1 = std::min(x0 + kTile, o.width), y1 = std::min(y0 + kTile, o.height);
         Sampler sampler(o.seed, 0);  // one for the tile, moved from pixel to pixel
         sampler.set_strata(o.spp, side, strata);
-        for (int y = y0; y < y1; ++y) {
-            const int j = o.height - 1 - y;  // image rows go down, v goes up
-            for (int i = x0; i < x1; ++i) {
-                sampler.start_pixel(std::uint64_t(y) * std::uint64_t(o.width) + std::uint64_t(i));
-                // Summed in double: a float sum of 65536 samples loses 7e-4 of each (the sum's
-                // step outgrows the samples); in double, n <= 2^16 floats add exactly, so the
-                // average of identical samples is that sample.
-                glm::dvec3 sum(0);
-                for (int k = first; k < first + count; ++k) {
-                    sampler.start_sample(k);
-                    CameraSample cs = camera_sample(i, j, o.antialiasing.filter, sampler);
-                    lens_and_time(view, moving, sampler, cs);
-                    const Ray ray = view.ray(cs);
-                    counters.count(RayKind::camera);
-                    TraceContext context{sampler, counters};
-                    context.time = ray.time;
-                    const Color L = integrator.Li(scene, ray, context);
-                    // The image holds finite values whatever goes wrong upstream; --stats
-                    // counts what was left out.
-                    if (std::isfinite(L.r + L.g + L.b))
-                        sum += glm::dvec3(L);
-                    else
-                        ++counters.nonfinite_samples;
+        if (centre_only)
+            integrator.trace_centre_tile(scene, view, Tile{x0, y0, x1, y1}, sampler, counters, result.image);
+        else
+            for (int y = y0; y < y1; ++y) {
+                const int j = o.height - 1 - y;  // image rows go down, v goes up
+                for (int i = x0; i < x1; ++i) {
+                    sampler.start_pixel(std::uint64_t(y) * std::uint64_t(o.width) + std::uint64_t(i));
+                    // Summed in double: a float sum of 65536 samples loses 7e-4 of each (the sum's
+                    // step outgrows the samples); in double, n <= 2^16 floats add exactly, so the
+                    // average of identical samples is that sample.
+                    glm::dvec3 sum(0);
+                    for (int k = first; k < first + count; ++k) {
+                        sampler.start_sample(k);
+                        CameraSample cs = camera_sample(i, j, o.antialiasing.filter, sampler);
+                        lens_and_time(view, moving, sampler, cs);
+                        const Ray ray = view.ray(cs);
+                        counters.count(RayKind::camera);
+                        TraceContext context{sampler, counters};
+                        context.time = ray.time;
+                        const Color L = integrator.Li(scene, ray, context);
+                        // The image holds finite values whatever goes wrong upstream; --stats
+                        // counts what was left out.
+                        if (std::isfinite(L.r + L.g + L.b))
+                            sum += glm::dvec3(L);
+                        else
+                            ++counters.nonfinite_samples;
+                    }
+                    result.image.at(i, y) = Color(sum / double(count));
                 }
-                result.image.at(i, y) = Color(sum / double(count));
             }
-        }
         for (std::size_t d = 0; d < kDimensions; ++d) counters.draws[d] += sampler.draws()[d];
         counters.nodes_visited += traversal_tally.nodes;
         counters.primitives_tested += traversal_tally.items;

@@ -31,7 +31,7 @@ bool in_shadow(const Scene& scene, const SpawnedRay& s, int light, const Color& 
 Color direct_light(const Scene& scene, const Light& light, int light_index, const ShadePoint& sp,
                    TraceContext& context);
 
-class WhittedIntegrator : public Integrator {
+class WhittedIntegrator : public IntegratorOf<WhittedIntegrator> {
 public:
     Color Li(const Scene& scene, const Ray& ray, TraceContext& context) const override;
 
