@@ -5,8 +5,11 @@
 #include "render/render.hpp"
 #include "support.hpp"
 
+#include <array>
 #include <atomic>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <memory>
 #include <string>
@@ -73,6 +76,47 @@ TEST_CASE("the render loop writes only finite pixels and counts the samples it l
     CHECK(r.counters.nonfinite_samples > 0);
     CHECK(r.counters.nonfinite_samples < std::uint64_t(8 * 6 * 2));
     CHECK(r.image.at(0, 5) == Color(0.5f));  // bottom left: every sample finite
+}
+
+TEST_CASE("one sample at each pixel's centre: the integrator's tile is what the general loop makes") {
+    // With the random pattern and one sample, render() hands each tile to the integrator
+    // (Integrator::trace_centre_tile); the regular pattern's one sample sits at the same
+    // centre but goes through the general loop (camera_sample, the sum). Same pixels, bit for
+    // bit, and the same counts: for an IntegratorOf (Whitted, with mirrors and shadows) and
+    // for an integrator that only has Li, where some samples are not finite.
+    Scene whitted = load_scene_text(R"({"camera": {"eye": [0, 1, 6], "target": [0, 0, 0]}, "shading": "whitted",
+        "materials": {"mirror": {"diffuse": [0.1, 0.1, 0.1], "mirror": [0.8, 0.8, 0.8]}},
+        "lights": [{"type": "point", "position": [3, 5, 4], "color": [1, 1, 1]}],
+        "surfaces": [{"type": "sphere", "center": [-0.8, 0, 0], "radius": 0.7, "material": "mirror"},
+                     {"type": "sphere", "center": [0.9, 0, 0], "radius": 0.6},
+                     {"type": "sphere", "center": [0, -100.7, 0], "radius": 100}]})",
+                                    "whitted.json", ".");
+    whitted.build_accel(AccelKind::fast);
+    Scene broken = whitted;
+    broken.integrator = std::make_shared<Broken>();
+    for (const Scene* scene : {&whitted, &broken}) {
+        RenderOptions o;
+        o.width = 37;  // tiles cut short on the right and at the bottom
+        o.height = 21;
+        const RenderResult centre = render(*scene, o);
+        o.antialiasing.pattern = PixelPattern::regular;
+        const RenderResult general = render(*scene, o);
+        for (std::size_t k = 0; k < centre.image.pixels.size(); ++k) {
+            const Color a = centre.image.pixels[k], b = general.image.pixels[k];
+            CHECK(std::bit_cast<std::array<std::uint32_t, 3>>(a) == std::bit_cast<std::array<std::uint32_t, 3>>(b));
+        }
+        CHECK(centre.counters.rays == general.counters.rays);
+        CHECK(centre.counters.nonfinite_samples == general.counters.nonfinite_samples);
+        CHECK(centre.counters.nodes_visited == general.counters.nodes_visited);
+    }
+    RenderOptions o;
+    o.width = 37;
+    o.height = 21;
+    const RenderResult w = render(whitted, o);
+    CHECK(w.counters.of(RayKind::camera) == 37u * 21u);
+    CHECK(w.counters.of(RayKind::reflection) > 0);
+    CHECK(w.counters.of(RayKind::shadow) > 0);
+    CHECK(render(broken, o).counters.nonfinite_samples > 0);
 }
 
 TEST_CASE("the average of identical samples is that sample, at the most samples per pixel allowed") {
