@@ -1,7 +1,7 @@
 """Medians of bench_embree's ratios over several runs (bench/embree_runs.sh).
 
 Reads the runs' outputs and prints, for each input and row (the SAH build, primary, shadow,
-primary with the HitRecord, the whole frame) and each thread count, the median lab/Embree
+primary with the HitRecord, the frame's rays searched alone, the whole frame) and each thread count, the median lab/Embree
 ratio (of speeds: above 1, the lab is the faster) with the lowest and highest of the runs;
 the same for the primary rays by kind (one thread, from --by-class: rays that miss the
 mesh's box, rays that enter it and miss, rays that hit); then the range of each row's
@@ -42,7 +42,7 @@ for path in sys.argv[1:]:
                     kind_names.append(m.group(1))
                 kinds.setdefault((current, m.group(1)), []).append(float(m.group(2)))
                 continue
-            m = re.match(r"^  (SAH build|primary|shadow|primary, HitRecord|whole frame) +([12]) +[\d.]+ +[\d.]+ +([\d.]+)$", line)
+            m = re.match(r"^  (SAH build|primary|shadow|primary, HitRecord|frame rays, search|whole frame) +([12]) +[\d.]+ +[\d.]+ +([\d.]+)$", line)
             if m and current:
                 row = m.group(1)
                 if row not in rows:
