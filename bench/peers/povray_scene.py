@@ -2,7 +2,8 @@
 
 POV-Ray is left-handed: every z is negated, as for Tachyon. Its camera `angle` is the horizontal
 field of view. assumed_gamma 1 keeps its arithmetic linear, as rtlab's; max_trace_level counts the
-camera ray (depth + 1). Finish: ambient a, diffuse 1 (brilliance 1: plain n.l), `specular` (Blinn)
+camera ray (depth + 1), and adc_bailout is the scene's min_weight (rtlab's min_reach) in place of
+POV-Ray's default 1/255, so both prune a pixel's tree of rays at the same weight. Finish: ambient a, diffuse 1 (brilliance 1: plain n.l), `specular` (Blinn)
 with roughness 1 / exponent, `reflection` the mirror's grey weight. Glass: a clear filtering
 pigment, ior 1.5, Fresnel reflection with conserve_energy (POV-Ray's exact Fresnel, where rtlab
 takes Schlick's approximation). POV-Ray lets light through a transparent object's shadow (filtered,
@@ -25,7 +26,8 @@ def povray_scene(scene, width, height):
     cam = scene["camera"]
     hfov = 2 * math.degrees(math.atan(math.tan(math.radians(cam["vfov"]) / 2) * width / height))
     out = ["#version 3.7;",
-           f"global_settings {{ assumed_gamma 1.0 max_trace_level {scene['depth'] + 1} ambient_light rgb 1 }}",
+           f"global_settings {{ assumed_gamma 1.0 max_trace_level {scene['depth'] + 1} "
+           f"adc_bailout {scene['min_weight']:.9g} ambient_light rgb 1 }}",
            f"background {{ rgb {v(scene['background'])} }}",
            f"camera {{ perspective location {v(flip(cam['eye']))} sky {v(flip(cam['up']))} up y "
            f"right x*{width}/{height} angle {hfov:.9g} look_at {v(flip(cam['target']))} }}"]

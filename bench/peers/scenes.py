@@ -6,6 +6,10 @@ A scene holds:
   camera     eye, target, up (right-handed, y up, as rtlab's files) and vfov in degrees
   background a colour; ambient a grey level a (every surface adds a times its diffuse colour)
   depth      how many reflections deep a pixel may go (rtlab's max_depth)
+  min_weight a secondary ray that would carry less than this share of its pixel is not cast:
+             rtlab's min_reach (its default, 1/1024), POV-Ray's adc_bailout (whose own default,
+             1/255, cuts glass's trees short: a Fresnel reflection of 4 % off a sphere seen
+             through another is 0.0016 of its pixel); Tachyon has no such cut
   materials  name -> diffuse colour, highlight (grey weight, Blinn exponent), mirror (grey
              weight) or glass (index of refraction; clear, no diffuse colour)
   lights     point lights: position, colour (no fall-off)
@@ -15,6 +19,8 @@ Grey weights, not colours, for the highlight and the mirror: Tachyon takes a sin
 each, so the three can only agree on grey ones."""
 import math
 import random
+
+MIN_WEIGHT = 1 / 1024  # rtlab's min_reach (render/scene.hpp), which rtlab_scene.py leaves at its default
 
 
 def material(diffuse=(0, 0, 0), highlight=0.0, exponent=32.0, mirror=0.0, glass=None):
@@ -55,7 +61,7 @@ def rtiow(seed, glass=True):
     return {
         "description": f"RTIOW book 1's cover, seed {seed}, {'with glass' if glass else 'glass made mirrors'}",
         "camera": {"eye": (13, 2, 3), "target": (0, 0, 0), "up": (0, 1, 0), "vfov": 20},
-        "background": (0.5, 0.7, 1.0), "ambient": 0.1, "depth": 5,
+        "background": (0.5, 0.7, 1.0), "ambient": 0.1, "depth": 5, "min_weight": MIN_WEIGHT,
         "materials": {k: v for k, v in mats.items() if k in used},
         "lights": [{"position": (10, 15, 8), "color": (0.7, 0.7, 0.7)},
                    {"position": (-8, 12, 10), "color": (0.4, 0.4, 0.4)}],
@@ -84,7 +90,7 @@ def bunny(obj):
     return {
         "description": "the Stanford bunny on a mirror floor",
         "camera": {"eye": (-0.05, 0.16, 0.36), "target": (-0.017, 0.095, 0), "up": (0, 1, 0), "vfov": 35},
-        "background": (0.3, 0.35, 0.45), "ambient": 0.1, "depth": 5,
+        "background": (0.3, 0.35, 0.45), "ambient": 0.1, "depth": 5, "min_weight": MIN_WEIGHT,
         "materials": {"clay": material((0.75, 0.7, 0.65), highlight=0.3, exponent=40),
                       "floor": material((0.1, 0.1, 0.12), mirror=0.8)},
         "lights": [{"position": (0.3, 0.5, 0.4), "color": (1, 1, 1)}],
@@ -115,7 +121,7 @@ def many_lights(count=32):
     return {
         "description": f"100 spheres under {count} point lights",
         "camera": {"eye": (0, 9, 12), "target": (0, 0, 0), "up": (0, 1, 0), "vfov": 45},
-        "background": (0.05, 0.05, 0.08), "ambient": 0.05, "depth": 5,
+        "background": (0.05, 0.05, 0.08), "ambient": 0.05, "depth": 5, "min_weight": MIN_WEIGHT,
         "materials": mats, "lights": lights, "spheres": spheres, "triangles": [], "meshes": [],
     }
 
