@@ -120,8 +120,9 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
                                     " are not samples of a " + std::to_string(o.spp) + "-sample pixel");
 
     // One sample per pixel at its centre draws nothing and needs no sum (camera_sample,
-    // lens_and_time): chapters 01-13 at their default settings, and the explorer's passes.
-    // Such tiles go to the integrator whole (Integrator::trace_centre_tile).
+    // lens_and_time): every render of one sample with the random pattern and the box filter,
+    // through a pinhole, nothing blurred by motion (chapters 01-13 unless a scene asks for
+    // more). Such tiles go to the integrator whole (Integrator::trace_centre_tile).
     const bool centre_only = count == 1 && o.spp == 1 && strata == Strata::none &&
                              o.antialiasing.filter == PixelFilter::box && !view.has_lens() &&
                              !(moving && view.shutter_open < view.shutter_close);
