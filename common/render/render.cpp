@@ -84,9 +84,18 @@ void check_budget(const RenderOptions& o) {
                                     " pattern takes n x n samples (1, 4, 9, 16, ...)");
 }
 
+namespace {
+
+// Do the camera rays need a time? Only when something moves and the shutter is open for a while.
+bool blurs_time(const View& view, bool moving) {
+    return moving && view.shutter_open < view.shutter_close;
+}
+
+}  // namespace
+
 void lens_and_time(const View& view, bool moving, Sampler& sampler, CameraSample& sample) {
     if (view.has_lens()) sample.lens = lens_point(sample_square(sampler, Dimension::lens), view.lens);
-    if (moving && view.shutter_open < view.shutter_close) {
+    if (blurs_time(view, moving)) {
         const LineSample t = sample_line(sampler, Dimension::time);
         sample.time = shutter_time(t.stratum, t.count, t.u, view.shutter_open, view.shutter_close);
     } else {
@@ -123,9 +132,8 @@ RenderResult render(const Scene& scene, const RenderOptions& o) {
     // lens_and_time): every render of one sample with the random pattern and the box filter,
     // through a pinhole, nothing blurred by motion (chapters 01-13 unless a scene asks for
     // more). Such tiles go to the integrator whole (Integrator::trace_centre_tile).
-    const bool centre_only = count == 1 && o.spp == 1 && strata == Strata::none &&
-                             o.antialiasing.filter == PixelFilter::box && !view.has_lens() &&
-                             !(moving && view.shutter_open < view.shutter_close);
+    const bool centre_only =
+        at_centre(o.spp, strata, o.antialiasing.filter) && !view.has_lens() && !blurs_time(view, moving);
     const Integrator& integrator = *scene.integrator;
     RenderResult result;
     result.image = Image(o.width, o.height);

@@ -16,8 +16,7 @@ LineSample sample_line(Sampler& sampler, Dimension d) {
 
 CameraSample camera_sample(int i, int j, PixelFilter filter, Sampler& sampler) {
     const Vec2 corner{Real(i), Real(j)};
-    if (sampler.count() == 1 && sampler.strata() == Strata::none && filter == PixelFilter::box)
-        return {corner + Vec2(Real(0.5))};
+    if (at_centre(sampler.count(), sampler.strata(), filter)) return {corner + Vec2(Real(0.5))};
     const Vec2 u = sample_square(sampler, Dimension::pixel);
     if (filter == PixelFilter::box) return {corner + u};
     return {corner + Vec2(Real(0.5)) + Vec2(tent_offset(u.x), tent_offset(u.y))};

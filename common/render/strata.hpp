@@ -33,4 +33,11 @@ LineSample sample_line(Sampler& sampler, Dimension d);
 // camera asks for them (lens_and_time in render.hpp).
 CameraSample camera_sample(int i, int j, PixelFilter filter, Sampler& sampler);
 
+// Does every sample of such a pixel sit at its centre, drawing nothing? One sample,
+// unstratified, through the box filter (camera_sample's first case; the render loop asks it
+// too, to skip the sampling altogether).
+inline bool at_centre(int count, Strata strata, PixelFilter filter) {
+    return count == 1 && strata == Strata::none && filter == PixelFilter::box;
+}
+
 }  // namespace rt
