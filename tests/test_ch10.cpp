@@ -360,6 +360,69 @@ TEST_CASE("10.4 every structure returns brute force's hit on 10^5 random rays (t
     CHECK(disagreements(list, set.rays, set.intervals, kStructures) == 0);
 }
 
+TEST_CASE("10.4 rays from one point searched as a packet get brute force's hits, ray by ray") {
+    // A pinhole camera's rays are searched eight at a time (book §10.9): every ray must get
+    // exactly its own hit, on every kind of primitive (the upper level's spheres, meshes and
+    // instances) and for a mesh alone (the packet walks the mesh's own tree).
+    const SurfaceList list = mixed_scene();
+    int searched = 0;
+    const std::vector<rt::test::Packet> packets = rt::test::camera_packets(rt::test::kRandomRays / 8, 6);
+    CHECK(rt::test::packet_disagreements(list, packets, kStructures, &searched) == 0);
+    CHECK(searched > int(packets.size()) * 3 / 4);  // most went as packets: the packet search was tested
+    SurfaceList mesh;
+    mesh.add(Mesh(icosphere(Vec3(0.3, -0.2, 0.1), 2, 3)));
+    CHECK(rt::test::packet_disagreements(mesh, rt::test::camera_packets(4000, 2), kStructures, &searched) == 0);
+    CHECK(searched > 3000);
+}
+
+TEST_CASE("10.4 packets of rays at a closed mesh's shared edges and vertices, and packets that cannot be, lose nothing") {
+    // Eight rays from one point through vertices and edge midpoints of an icosphere (ties
+    // between triangles: each ray must get brute force's triangle); packets whose rays leave
+    // different points, point into different octants, have a zero or subnormal direction
+    // component, or start behind the origin are searched ray by ray, with the same answers.
+    SurfaceList list;
+    const MeshData data = icosphere(Vec3(0.3, -0.2, 0.1), 2, 3);
+    list.add(Mesh(data));
+    rt::test::Rng rng;
+    std::vector<rt::test::Packet> packets;
+    for (std::size_t t = 0; t + 8 <= data.triangles.size(); t += 8) {
+        rt::test::Packet p;
+        const Vec3 eye = rng.vec(-9, 9) * Real(1.5);
+        for (std::size_t k = t; k < t + 8; ++k) {
+            const auto& tri = data.triangles[k];
+            const Vec3 a = data.positions[tri[0]], b = data.positions[tri[1]];
+            p.rays.push_back(Ray{eye, (k % 2 ? a : (a + b) * Real(0.5)) - eye});
+        }
+        packets.push_back(p);
+    }
+    int searched = 0;
+    CHECK(rt::test::packet_disagreements(list, packets, kStructures, &searched) == 0);
+    CHECK(searched > 0);  // those in one octant went together
+    std::vector<rt::test::Packet> refused;
+    const Vec3 eye(0.2, 4, 3);
+    const auto aimed = [&](Vec3 d) {
+        rt::test::Packet p;
+        for (int k = 0; k < 8; ++k) p.rays.push_back(Ray{eye, Vec3(0.3, -0.2, 0.1) - eye + Real(0.1) * Real(k) * d});
+        return p;
+    };
+    refused.push_back(aimed(Vec3(1, 0, 0)));
+    refused.back().rays[3].origin.x += 1e-9;  // another origin
+    refused.push_back(aimed(Vec3(0, 0, 40)));  // the last rays turn to +z: another octant
+    refused.push_back(aimed(Vec3(0, 0, 0)));
+    refused.back().rays[5].direction.x = 0;  // a zero component
+    refused.push_back(aimed(Vec3(0, 0, 0)));
+    refused.back().rays[2].direction.x = Real(-0.0);
+    refused.push_back(aimed(Vec3(0, 0, 0)));
+    refused.back().rays[6].direction.x = Real(1e-40);  // a float subnormal
+    refused.push_back(aimed(Vec3(0, 0, 0)));
+    refused.back().interval = Interval{-1, kInfinity};  // starts behind the eye
+    for (const rt::test::Packet& p : refused) {
+        WidePacket wide;
+        CHECK_FALSE(make_packet(p.rays, p.interval, wide));
+    }
+    CHECK(rt::test::packet_disagreements(list, refused, kStructures) == 0);
+}
+
 TEST_CASE("10.4 rays aimed exactly at a closed mesh's shared edges and vertices are never lost") {
     // Rays through the vertices and edge midpoints of an icosphere, from outside: each hits
     // (the mesh is closed and the triangle test watertight), and no structure loses one to

@@ -9,6 +9,7 @@
 #include "geometry/limits.hpp"
 #include "render/strata.hpp"
 #include "support.hpp"
+#include "support/packet_boxes.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -181,4 +182,8 @@ TEST_CASE("flat BVH: the parallel build lays out the same tree on 1 thread as on
     CHECK(bad == 0);
     CHECK(std::count(seen.begin(), seen.end(), 1) == long(boxes.size()));
 }
+TEST_CASE("a packet's search finds each ray the nearest box brute force finds (the lanes of this build)") {
+    rt::test::check_packet_searches();
+}
+
 }  // TEST_SUITE("common")

@@ -3,6 +3,7 @@
 // names (rt::lanes_portable) keep it apart from the library's x86 code it links with.
 #define RTLAB_PORTABLE_LANES
 #include "core/wide_bvh.hpp"
+#include "support/packet_boxes.hpp"
 
 #include <doctest/doctest.h>
 
@@ -113,6 +114,10 @@ TEST_CASE("portable lanes: splat puts the value in every lane, the sign of zero 
 TEST_CASE("portable lanes: the wide BVH's searches find the nearest box brute force finds") {
     check_searches<4>();
     check_searches<8>();
+}
+
+TEST_CASE("portable lanes: a packet's search finds each ray the nearest box brute force finds") {
+    rt::test::check_packet_searches();
 }
 
 }  // TEST_SUITE("common")

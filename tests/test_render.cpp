@@ -82,8 +82,10 @@ TEST_CASE("one sample at each pixel's centre: the integrator's tile is what the 
     // With the random pattern and one sample, render() hands each tile to the integrator
     // (Integrator::trace_centre_tile); the regular pattern's one sample sits at the same
     // centre but goes through the general loop (camera_sample, the sum). Same pixels, bit for
-    // bit, and the same counts: for an IntegratorOf (Whitted, with mirrors and shadows) and
-    // for an integrator that only has Li, where some samples are not finite.
+    // bit, and the same counts of rays: for a FirstHitIntegrator (Whitted, with mirrors and
+    // shadows), whose camera rays the tile searches eight at a time as packets (book §10.9),
+    // and for an integrator that only has Li, where some samples are not finite. The search
+    // work differs where packets were used: fewer boxes tested for the same hits.
     Scene whitted = load_scene_text(R"({"camera": {"eye": [0, 1, 6], "target": [0, 0, 0]}, "shading": "whitted",
         "materials": {"mirror": {"diffuse": [0.1, 0.1, 0.1], "mirror": [0.8, 0.8, 0.8]}},
         "lights": [{"type": "point", "position": [3, 5, 4], "color": [1, 1, 1]}],
@@ -107,7 +109,10 @@ TEST_CASE("one sample at each pixel's centre: the integrator's tile is what the 
         }
         CHECK(centre.counters.rays == general.counters.rays);
         CHECK(centre.counters.nonfinite_samples == general.counters.nonfinite_samples);
-        CHECK(centre.counters.nodes_visited == general.counters.nodes_visited);
+        if (scene == &broken)
+            CHECK(centre.counters.nodes_visited == general.counters.nodes_visited);
+        else
+            CHECK(centre.counters.nodes_visited < general.counters.nodes_visited);
     }
     RenderOptions o;
     o.width = 37;

@@ -17,6 +17,7 @@
 #include "core/dispatch.hpp"
 #include "core/names.hpp"
 
+#include <span>
 #include <variant>
 
 namespace rt {
@@ -59,6 +60,19 @@ public:
     }
     bool occluded(const SurfaceList& surfaces, const Ray& ray, Interval interval) const {
         return dispatch(impl_, [&](const auto& a) { return a.occluded(surfaces, ray, interval); });
+    }
+    // The closest hits of rays from one point (a pinhole camera's): recs[k], and bit k of the
+    // answer, for ray k, each what hit() gives it. The fast path searches them as a packet
+    // (core/wide_packet.hpp); the course's structures, one after another.
+    unsigned hit_packet(const SurfaceList& surfaces, std::span<const Ray> rays, Interval interval,
+                        HitRecord* recs) const {
+        return dispatch(impl_, [&](const auto& a) {
+            if constexpr (requires { a.hit_packet(surfaces, rays, interval, recs); }) {
+                return a.hit_packet(surfaces, rays, interval, recs);
+            } else {
+                return one_by_one(rays.size(), [&](std::size_t k) { return a.hit(surfaces, rays[k], interval, recs[k]); });
+            }
+        });
     }
     const AccelInfo& info() const { return info_; }
 

@@ -15,6 +15,11 @@ struct Surface {
     bool hit(const Ray& ray, Interval interval, HitRecord& rec) const {
         return hit_record(shape, ray, interval, SurfaceRef{id, material}, rec);
     }
+    // The closest hits of a packet of rays from one point (core/wide_packet.hpp): recs[k] and
+    // bit k of the answer for ray k, each what hit() gives it.
+    unsigned hit_packet(WidePacket& packet, std::span<const Ray> rays, Interval interval, HitRecord* recs) const {
+        return hit_records(shape, packet, rays, interval, SurfaceRef{id, material}, recs);
+    }
     // Is there any hit in the interval? Stops at the first one found.
     bool occluded(const Ray& ray, Interval interval) const { return rt::occluded(shape, ray, interval); }
     Box bounding_box() const { return rt::bounding_box(shape); }

@@ -10,6 +10,7 @@
 
 #include <cstdint>
 #include <optional>
+#include <span>
 #include <vector>
 
 namespace rt {
@@ -33,6 +34,12 @@ public:
         return occluded_upper(surfaces, ray, interval);
     }
 
+    // The closest hits of rays from one point, a pinhole camera's (core/wide_packet.hpp):
+    // recs[k], and bit k of the answer, for ray k, each what hit() gives it. The rays are
+    // searched as one packet where they can be, else one at a time.
+    unsigned hit_packet(const SurfaceList& surfaces, std::span<const Ray> rays, Interval interval,
+                        HitRecord* recs) const;
+
     // The depth of the binary tree the upper level was collapsed from (what --stats reports).
     int depth() const { return depth_; }
     // The upper level plus every distinct mesh's BVH, counted once however often it is used.
@@ -42,6 +49,12 @@ public:
 private:
     bool hit_upper(const SurfaceList& surfaces, const Ray& ray, Interval interval, HitRecord& rec) const;
     bool occluded_upper(const SurfaceList& surfaces, const Ray& ray, Interval interval) const;
+    // One ray's closest-hit search among the upper level's items, leaf by leaf (hit_upper's
+    // and hit_packet's): `best` and `best_sphere` are its state (see hit_upper).
+    bool leaf_closest(const SurfaceList& surfaces, const Ray& ray, std::uint32_t first, std::uint32_t count,
+                      Interval& iv, HitRecord& best, std::uint32_t& best_sphere) const;
+    void record_closest(const SurfaceList& surfaces, const Ray& ray, const HitRecord& best, std::uint32_t best_sphere,
+                        HitRecord& rec) const;
 
     WideBvh<kWidth> wide_;
     std::vector<std::uint32_t> items_;  // surface numbers, leaf after leaf (a leaf holds a run of them)

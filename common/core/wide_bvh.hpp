@@ -200,23 +200,34 @@ inline constexpr PackTable kPackTable = make_pack_table();
 // follows at once (so it is not read back from the stack: that would wait for the store).
 // Eight at a time with AVX2: one shuffle puts the slots in order and packs the entered ones
 // together, and one store each writes them (the stack has room for W beyond its top).
-// Elsewhere, the same order one slot at a time.
+// Elsewhere, the same order one slot at a time. A packet's search (core/wide_packet.hpp)
+// also moves a word per child along with them, `payload`, slot by slot, into `payloads`,
+// the nearest's into `nearest_payload`.
 template <unsigned kOctant, int W>
 inline int push_children(const WideNode<W>& node, unsigned mask, const typename FloatLanes<W>::type& t,
-                         const LaneMask<W>& entered, std::uint32_t* refs, float* ts, std::uint32_t& nearest) {
+                         const LaneMask<W>& entered, std::uint32_t* refs, float* ts, std::uint32_t& nearest,
+                         const std::uint32_t* payload = nullptr, std::uint32_t* payloads = nullptr,
+                         std::uint32_t* nearest_payload = nullptr) {
     constexpr int octant_shift = 3 * int(kOctant);
 #ifdef RTLAB_LANES_AVX2
     if constexpr (W == 8) {
         const __m256i order =
             _mm256_srli_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.order)), octant_shift);
         const unsigned ordered = unsigned(_mm256_movemask_ps(_mm256_permutevar8x32_ps(__m256(entered), order)));
-        nearest = node.child[node.order[std::countr_zero(ordered)] >> octant_shift & 7];
+        const unsigned first = node.order[std::countr_zero(ordered)] >> octant_shift & 7;
+        nearest = node.child[first];
         const __m256i pick = _mm256_permutevar8x32_epi32(
             order, _mm256_load_si256(reinterpret_cast<const __m256i*>(kPackTable.lanes[ordered])));
         _mm256_storeu_si256(
             reinterpret_cast<__m256i*>(refs),
             _mm256_permutevar8x32_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(node.child)), pick));
         _mm256_storeu_ps(ts, _mm256_permutevar8x32_ps(__m256(t), pick));
+        if (payload) {
+            _mm256_storeu_si256(
+                reinterpret_cast<__m256i*>(payloads),
+                _mm256_permutevar8x32_epi32(_mm256_load_si256(reinterpret_cast<const __m256i*>(payload)), pick));
+            *nearest_payload = payload[first];
+        }
         return std::popcount(ordered);
     }
 #endif
@@ -229,8 +240,10 @@ inline int push_children(const WideNode<W>& node, unsigned mask, const typename 
     for (int i = 0; i < n; ++i) {
         refs[i] = node.child[slots[n - 1 - i]];
         ts[i] = t[slots[n - 1 - i]];
+        if (payload) payloads[i] = payload[slots[n - 1 - i]];
     }
     nearest = node.child[slots[0]];
+    if (payload) *nearest_payload = payload[slots[0]];
     return n;
 }
 

@@ -164,6 +164,44 @@ bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
         [&](std::uint32_t b) { prefetch(a.blocks[b]); });
 }
 
+unsigned hit_packet(const Mesh& mesh, WidePacket& packet, std::span<const Ray> rays, Interval interval,
+                    MeshHit* results) {
+    const MeshAccel& a = mesh.accel();
+    // Each ray's search as hit() keeps it: its interval, its best hit so far, and its shear,
+    // made at the first leaf it reaches (bit k of `sheared` says ray k's is made).
+    struct Search {
+        Interval iv;
+        Closest best;
+    };
+    Search search[kPacketRays];
+    RayShear shear[kPacketRays];
+    for (std::size_t k = 0; k < rays.size(); ++k) search[k] = {interval, Closest{interval.max}};
+    unsigned found = 0, sheared = 0;
+    closest_hits(
+        a.wide, packet,
+        [&](std::uint32_t b, std::uint32_t, unsigned which) {
+            bool narrowed = false;
+            for (; which != 0; which &= which - 1) {
+                const int k = std::countr_zero(which);
+                Search& s = search[k];
+                const Ray& ray = rays[std::size_t(k)];
+                if (!(sheared >> k & 1)) {
+                    shear[k] = RayShear(ray);
+                    sheared |= 1u << k;
+                }
+                const unsigned lanes = candidates(a.blocks[b], shear[k], s.iv);
+                if (lanes != 0 && exact_closest(lanes, a, b, ray, interval.min, s.iv, s.best, results[k])) {
+                    found |= 1u << k;
+                    packet.narrow(k, s.iv.max);
+                    narrowed = true;
+                }
+            }
+            return narrowed;
+        },
+        [&](std::uint32_t b) { prefetch(a.blocks[b]); });
+    return found;
+}
+
 bool occluded(const Mesh& mesh, const Ray& ray, Interval interval) {
     const MeshAccel& a = mesh.accel();
     interval = in_registers(interval);

@@ -2,6 +2,7 @@
 // Indexed triangle meshes. Triangles share vertices by index, so an edge common to two
 // triangles has bit-identical end points in both: what the watertight test needs.
 #include "core/wide_bvh.hpp"
+#include "core/wide_packet.hpp"
 #include "geometry/triangle.hpp"
 #include "geometry/triangle_block.hpp"
 
@@ -9,6 +10,7 @@
 #include <cstdint>
 #include <memory>
 #include <optional>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -95,6 +97,10 @@ private:
 // The closest hit through the mesh's BVH; at equal t the lower triangle index, so the
 // answer is the brute-force one (geometry/hit_record.hpp, closer).
 bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result);
+// The closest hits of a packet of rays from one point (core/wide_packet.hpp) over `interval`,
+// each the hit that hit() finds for it: results[k] and bit k of the answer for ray k.
+unsigned hit_packet(const Mesh& mesh, WidePacket& packet, std::span<const Ray> rays, Interval interval,
+                    MeshHit* results);
 // True as soon as any triangle is hit in the interval: shadow rays need no closest hit.
 bool occluded(const Mesh& mesh, const Ray& ray, Interval interval);
 HitRecord record(const Mesh& mesh, const Ray& ray, const MeshHit& h, SurfaceRef who = {});

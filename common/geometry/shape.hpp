@@ -11,8 +11,10 @@
 #include "geometry/sphere.hpp"
 #include "geometry/triangle.hpp"
 
+#include <bit>
 #include <concepts>
 #include <iterator>
+#include <span>
 #include <variant>
 
 namespace rt {
@@ -55,6 +57,32 @@ inline bool hit_record(const Sphere& sphere, const Ray& ray, Interval interval, 
 template <std::same_as<Shape> S>
 bool hit_record(const S& shape, const Ray& ray, Interval interval, SurfaceRef who, HitRecord& rec) {
     return dispatch(shape, [&](const auto& s) { return hit_record(s, ray, interval, who, rec); });
+}
+
+// The closest hits of a packet of rays from one point (core/wide_packet.hpp), each as
+// hit_record finds it: recs[k], and bit k of the answer, for ray k. A mesh searches its tree
+// once for them all (geometry/mesh.hpp); any other shape tests one ray after another.
+template <class S>
+unsigned hit_records(const S& shape, WidePacket&, std::span<const Ray> rays, Interval interval, SurfaceRef who,
+                     HitRecord* recs) {
+    return one_by_one(rays.size(), [&](std::size_t k) { return hit_record(shape, rays[k], interval, who, recs[k]); });
+}
+
+inline unsigned hit_records(const Mesh& mesh, WidePacket& packet, std::span<const Ray> rays, Interval interval,
+                            SurfaceRef who, HitRecord* recs) {
+    MeshHit hits[kPacketRays];
+    const unsigned found = hit_packet(mesh, packet, rays, interval, hits);
+    for (unsigned m = found; m != 0; m &= m - 1) {
+        const int k = std::countr_zero(m);
+        recs[k] = record(mesh, rays[std::size_t(k)], hits[k], who);
+    }
+    return found;
+}
+
+template <std::same_as<Shape> S>
+unsigned hit_records(const S& shape, WidePacket& packet, std::span<const Ray> rays, Interval interval, SurfaceRef who,
+                     HitRecord* recs) {
+    return dispatch(shape, [&](const auto& s) { return hit_records(s, packet, rays, interval, who, recs); });
 }
 
 // Any hit in the interval: what a shadow ray asks. For most shapes that is their own test;

@@ -49,6 +49,7 @@ struct RayShear {
     int kx, ky, kz;
     float sx, sy, sz;
 
+    RayShear() = default;  // to be assigned one of the others (a packet's rays make theirs when needed)
     explicit RayShear(const Ray& ray) : RayShear(ray, Real(1) / ray.direction) {}
     // inv_direction: 1 / ray.direction, when the caller has it already.
     RayShear(const Ray& ray, const Vec3& inv_direction);

@@ -77,24 +77,31 @@ struct Tile {
 // A tile of a pass that takes each pixel's one sample at its centre, through the pinhole, at
 // the shutter's opening (render/render.cpp decides when): what the render loop makes for
 // such a sample in general, without the sample's draws, the per-sample loop or the sum (the
-// average of one float sample is that sample). `li` is the integrator's Li.
+// average of one float sample is that sample).
+//
+// centre_sample is one pixel of it: the sampler moved to the pixel, the camera ray counted,
+// and the colour `li` brings back for it (its Li, given the ray and its context) kept in the
+// image, if it is finite.
+template <class LiFn>
+void centre_sample(LiFn&& li, const Ray& ray, int i, int y, Sampler& sampler, RayCounters& counters, Image& image) {
+    sampler.start_pixel(std::uint64_t(y) * std::uint64_t(image.width) + std::uint64_t(i));
+    sampler.start_sample(0);
+    counters.count(RayKind::camera);
+    TraceContext context{sampler, counters};
+    context.time = ray.time;
+    const Color L = li(ray, context);
+    if (std::isfinite(L.r + L.g + L.b))
+        image.at(i, y) = L + 0.0f;  // -0 + 0 is +0, as in the render loop's sum
+    else
+        ++counters.nonfinite_samples;  // the pixel stays 0, the empty sum's average
+}
+
+// The tile pixel by pixel. `li` is the integrator's Li.
 template <class LiFn>
 void trace_centre_tile(LiFn&& li, const View& view, Tile tile, Sampler& sampler, RayCounters& counters, Image& image) {
     for (int y = tile.y0; y < tile.y1; ++y) {
         const int j = image.height - 1 - y;  // image rows go down, v goes up
-        for (int i = tile.x0; i < tile.x1; ++i) {
-            sampler.start_pixel(std::uint64_t(y) * std::uint64_t(image.width) + std::uint64_t(i));
-            sampler.start_sample(0);
-            const Ray ray = view.pixel_ray(i, j);
-            counters.count(RayKind::camera);
-            TraceContext context{sampler, counters};
-            context.time = ray.time;
-            const Color L = li(ray, context);
-            if (std::isfinite(L.r + L.g + L.b))
-                image.at(i, y) = L + 0.0f;  // -0 + 0 is +0, as in the render loop's sum
-            else
-                ++counters.nonfinite_samples;  // the pixel stays 0, the empty sum's average
-        }
+        for (int i = tile.x0; i < tile.x1; ++i) centre_sample(li, view.pixel_ray(i, j), i, y, sampler, counters, image);
     }
 }
 

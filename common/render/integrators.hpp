@@ -1,5 +1,6 @@
 #pragma once
 // The shading models: pictures of geometry (chapters 01-04), then of light (05).
+#include "render/first_hit.hpp"
 #include "render/scene.hpp"
 #include "shading/shading.hpp"
 
@@ -38,24 +39,22 @@ private:
 };
 
 // Colour = the unit normal at the first hit, or the background.
-class NormalIntegrator : public IntegratorOf<NormalIntegrator> {
+class NormalIntegrator : public FirstHitIntegrator<NormalIntegrator> {
 public:
-    Color Li(const Scene& scene, const Ray& ray, TraceContext&) const override {
-        HitRecord rec;
-        if (!scene.hit(ray, Interval{}, rec)) return scene.background;
-        return Color(0.5f * (Color(rec.normal) + 1.0f));
+    Color shade(const Scene& scene, const Ray&, const HitRecord* rec, TraceContext&) const {
+        if (!rec) return scene.background;
+        return Color(0.5f * (Color(rec->normal) + 1.0f));
     }
 };
 
 // Colour = the barycentric coordinates (1 - beta - gamma, beta, gamma) of a triangle hit;
 // other surfaces show their normal.
-class BarycentricIntegrator : public IntegratorOf<BarycentricIntegrator> {
+class BarycentricIntegrator : public FirstHitIntegrator<BarycentricIntegrator> {
 public:
-    Color Li(const Scene& scene, const Ray& ray, TraceContext&) const override {
-        HitRecord rec;
-        if (!scene.hit(ray, Interval{}, rec)) return scene.background;
-        if (!rec.has_barycentrics) return Color(0.5f * (Color(rec.normal) + 1.0f));
-        return Color(float(1 - rec.beta - rec.gamma), float(rec.beta), float(rec.gamma));
+    Color shade(const Scene& scene, const Ray&, const HitRecord* rec, TraceContext&) const {
+        if (!rec) return scene.background;
+        if (!rec->has_barycentrics) return Color(0.5f * (Color(rec->normal) + 1.0f));
+        return Color(float(1 - rec->beta - rec->gamma), float(rec->beta), float(rec->gamma));
     }
 };
 
@@ -73,18 +72,17 @@ private:
 
 // The ray tracing program of course §9.4: ambient + Lambert + Blinn-Phong for every light,
 // no shadows yet. Highlights are computed only for materials that have a specular colour.
-class PhongIntegrator : public IntegratorOf<PhongIntegrator> {
+class PhongIntegrator : public FirstHitIntegrator<PhongIntegrator> {
 public:
-    Color Li(const Scene& scene, const Ray& ray, TraceContext& context) const override {
-        HitRecord rec;
-        if (!scene.hit(ray, Interval{}, rec)) return scene.background;
-        const Material& m = scene.material(rec.material);
+    Color shade(const Scene& scene, const Ray& ray, const HitRecord* rec, TraceContext& context) const {
+        if (!rec) return scene.background;
+        const Material& m = scene.material(rec->material);
         // Shade the side the eye sees: flip the normal of a surface seen from behind.
-        const Vec3 n = glm::dot(rec.normal, ray.direction) < 0 ? rec.normal : -rec.normal;
+        const Vec3 n = glm::dot(rec->normal, ray.direction) < 0 ? rec->normal : -rec->normal;
         const Vec3 v = -glm::normalize(ray.direction);
         Color c = m.diffuse * scene.ambient;
         for (const Light& light : scene.lights) {
-            const LightSample l = light.sample(rec.p);
+            const LightSample l = light.sample(rec->p);
             ++context.counters.light_terms;
             c += lambert(m.diffuse, l.color, n, l.direction);
             if (m.has_specular()) {

@@ -10,6 +10,7 @@
 #include "shading/material.hpp"
 
 #include <memory>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -70,6 +71,12 @@ struct Scene {
         // (one shape each) from depending on exercise 5.1, the search over a list.
         if (surfaces.size() == 1) return surfaces[0].hit(ray, interval, rec);
         return surfaces.hit(ray, interval, rec);
+    }
+    // The closest hits of up to eight rays from one point, a pinhole camera's: recs[k], and
+    // bit k of the answer, for ray k, each exactly what hit() finds (book §10.9).
+    unsigned hit_packet(std::span<const Ray> rays, Interval interval, HitRecord* recs) const {
+        if (accel) return accel->hit_packet(surfaces, rays, interval, recs);
+        return one_by_one(rays.size(), [&](std::size_t k) { return hit(rays[k], interval, recs[k]); });
     }
     bool occluded(const Ray& ray, Interval interval) const {
         if (accel) return accel->occluded(surfaces, ray, interval);

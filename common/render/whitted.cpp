@@ -26,10 +26,10 @@ bool in_shadow(const Scene& scene, const SpawnedRay& spawned, int light, const C
     return blocked;
 }
 
-Color WhittedIntegrator::Li(const Scene& scene, const Ray& ray, TraceContext& context) const {
+Color WhittedIntegrator::shade(const Scene& scene, const Ray& ray, const HitRecord* hit, TraceContext& context) const {
     context.open(ray);
-    HitRecord rec;
-    if (!scene.hit(ray, context.interval, rec)) return context.close(scene.background);
+    if (!hit) return context.close(scene.background);
+    const HitRecord& rec = *hit;
     context.record_hit(rec);
     const Material& m = scene.material(rec.material);
     // Shade the side the ray arrives on; which side that is, the geometric normal decides.

@@ -4,7 +4,7 @@
 // that is not a mirror or a dielectric casts no secondary ray at all, and a scene without
 // such materials renders exactly as chapter 06's shadows alone.
 #include "core/offset.hpp"
-#include "render/integrator.hpp"
+#include "render/first_hit.hpp"
 #include "shading/light.hpp"
 #include "shading/material.hpp"
 
@@ -31,9 +31,10 @@ bool in_shadow(const Scene& scene, const SpawnedRay& s, int light, const Color& 
 Color direct_light(const Scene& scene, const Light& light, int light_index, const ShadePoint& sp,
                    TraceContext& context);
 
-class WhittedIntegrator : public IntegratorOf<WhittedIntegrator> {
+class WhittedIntegrator : public FirstHitIntegrator<WhittedIntegrator> {
 public:
-    Color Li(const Scene& scene, const Ray& ray, TraceContext& context) const override;
+    // What a ray brings back from its first hit (null: it hit nothing).
+    Color shade(const Scene& scene, const Ray& ray, const HitRecord* hit, TraceContext& context) const;
 
 private:
     // Casts a secondary ray from the hit in `direction`, and returns its colour times

@@ -167,6 +167,79 @@ inline int disagreements(const SurfaceList& list, const std::vector<Ray>& rays, 
     return failures;
 }
 
+// Rays searched together, as a pinhole camera's are (Accel::hit_packet): up to eight that
+// leave one point. Each packet's rays must get brute force's hits, one by one.
+struct Packet {
+    std::vector<Ray> rays;
+    Interval interval;
+};
+
+// Each structure's hit_packet against brute force's hit for each ray of each packet; returns
+// the number of disagreements (the first is CHECKed in full). `searched` counts the packets
+// the fast path searches as one (make_packet took them), for the caller to check that the
+// packet search itself was tested, not only the fallback of one ray at a time.
+inline int packet_disagreements(const SurfaceList& list, const std::vector<Packet>& packets,
+                                std::span<const AccelKind> structures, int* searched = nullptr) {
+    const Accel brute(list, AccelKind::none);
+    int failures = 0;
+    if (searched) {
+        *searched = 0;
+        for (const Packet& p : packets) {
+            WidePacket wide;
+            *searched += make_packet(p.rays, p.interval, wide);
+        }
+    }
+    for (AccelKind kind : structures) {
+        const Accel accel(list, kind);
+        const std::string structure = structure_label(kind);
+        CAPTURE(structure);
+        for (std::size_t j = 0; j < packets.size(); ++j) {
+            const Packet& p = packets[j];
+            HitRecord got[kPacketRays];
+            const unsigned found = accel.hit_packet(list, p.rays, p.interval, got);
+            for (std::size_t k = 0; k < p.rays.size(); ++k) {
+                HitRecord want;
+                const bool want_hit = brute.hit(list, p.rays[k], p.interval, want);
+                const Ray& ray = p.rays[k];
+                const Interval& interval = p.interval;
+                CAPTURE(j);
+                CAPTURE(k);
+                CAPTURE(ray);
+                CAPTURE(interval);
+                RT_CHECK_FIRST(failures, bool(found >> k & 1) == want_hit);
+                if (want_hit && (found >> k & 1)) {
+                    RT_CHECK_FIRST(failures, got[k].t == want.t);
+                    RT_CHECK_FIRST(failures, got[k].surface == want.surface);
+                    RT_CHECK_FIRST(failures, got[k].primitive == want.primitive);
+                    RT_CHECK_FIRST(failures, got[k].p == want.p);
+                    RT_CHECK_FIRST(failures, got[k].normal == want.normal);
+                }
+            }
+            RT_CHECK_FIRST(failures, (found >> p.rays.size()) == 0u);
+        }
+    }
+    return failures;
+}
+
+// Packets for a scene around the origin of about `size`: from eyes outside it and inside it,
+// rays towards points near a target (near: a camera's neighbouring pixels; far apart: still
+// one octant, the frustum wide), 1 to 8 rays, over all of t >= 0 or a part of it.
+inline std::vector<Packet> camera_packets(int n, Real size) {
+    Rng rng;
+    std::vector<Packet> packets;
+    for (int j = 0; j < n; ++j) {
+        Packet p;
+        const Vec3 eye = j % 3 == 0 ? rng.vec(-size, size) * Real(0.5) : rng.vec(-size, size) * Real(2.5);
+        const Vec3 target = rng.vec(-size, size) * Real(0.6);
+        const Real spread = j % 4 == 0 ? size * Real(0.5) : size * Real(0.01);
+        const int count = 1 + j % kPacketRays;
+        for (int k = 0; k < count; ++k) p.rays.push_back(Ray{eye, target + rng.vec(-spread, spread) - eye});
+        if (j % 5 == 0) p.interval = Interval{rng(0, size), rng(size, 4 * size)};
+        packets.push_back(p);
+    }
+    return packets;
+}
+
 // Renders the scene small with brute force and then with each structure; returns how many
 // pixels differ in all (the structures promise none: the same hits, bit for bit).
 inline int image_differences(Scene scene, std::span<const AccelKind> structures, int width = 32, int height = 24) {
