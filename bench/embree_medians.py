@@ -44,7 +44,7 @@ for path in sys.argv[1:]:
                     kind_names.append(m.group(1))
                 kinds.setdefault((current, m.group(1)), []).append(float(m.group(2)))
                 continue
-            m = re.match(r"^  (SAH build|primary|shadow|primary, HitRecord|frame rays, search|whole frame) +([12]) +[\d.]+ +[\d.]+ +([\d.]+)$", line)
+            m = re.match(r"^  (SAH build|primary|shadow|primary, HitRecord|frame rays, search|frame rays, packets|whole frame) +([12]) +[\d.]+ +[\d.]+ +([\d.]+)$", line)
             if m and current:
                 row = m.group(1)
                 if row not in rows:

@@ -361,7 +361,7 @@ TEST_CASE("10.4 every structure returns brute force's hit on 10^5 random rays (t
 }
 
 TEST_CASE("10.4 rays from one point searched as a packet get brute force's hits, ray by ray") {
-    // A pinhole camera's rays are searched eight at a time (book §10.9): every ray must get
+    // A pinhole camera's rays are searched eight at a time (book §10.5): every ray must get
     // exactly its own hit, on every kind of primitive (the upper level's spheres, meshes and
     // instances) and for a mesh alone (the packet walks the mesh's own tree).
     const SurfaceList list = mixed_scene();

@@ -83,7 +83,7 @@ TEST_CASE("one sample at each pixel's centre: the integrator's tile is what the 
     // (Integrator::trace_centre_tile); the regular pattern's one sample sits at the same
     // centre but goes through the general loop (camera_sample, the sum). Same pixels, bit for
     // bit, and the same counts of rays: for a FirstHitIntegrator (Whitted, with mirrors and
-    // shadows), whose camera rays the tile searches eight at a time as packets (book §10.9),
+    // shadows), whose camera rays the tile searches eight at a time as packets (book §10.5),
     // and for an integrator that only has Li, where some samples are not finite. The search
     // work differs where packets were used: fewer boxes tested for the same hits.
     Scene whitted = load_scene_text(R"({"camera": {"eye": [0, 1, 6], "target": [0, 0, 0]}, "shading": "whitted",

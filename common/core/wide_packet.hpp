@@ -1,5 +1,5 @@
 #pragma once
-// Rays that leave one point, searched together (book §10.9). A pinhole camera's rays all
+// Rays that leave one point, searched together (book §10.5). A pinhole camera's rays all
 // start at the eye, and the rays of neighbouring pixels go almost the same way, so they
 // enter almost the same boxes: searched one at a time, each ray repeats its neighbours' box
 // tests. A packet of up to eight such rays walks the wide BVH of core/wide_bvh.hpp once:
@@ -14,7 +14,7 @@
 // search would test, this search tests for it: the hits are the same, bit for bit, whatever
 // the order (geometry/hit_record.hpp, closer). What changes is the work: on a bunny framed
 // by a 1024 x 1024 camera, a packet of 2 x 4 pixels visits about 3 nodes where its eight
-// rays one at a time visit about 18 (book §10.9 measures it).
+// rays one at a time visit about 18 (book §10.7 measures it).
 #include "core/wide_bvh.hpp"
 
 #include <bit>

@@ -5,7 +5,7 @@
 //   Color shade(const Scene&, const Ray&, const HitRecord* rec, TraceContext&) const;
 // and the search is made here, once for all of them: one ray at a time in Li, and for a
 // tile of centre samples (Integrator::trace_centre_tile) eight camera rays at a time, 2 x 4
-// pixels whose rays leave the eye together, as one packet (Scene::hit_packet, book §10.9).
+// pixels whose rays leave the eye together, as one packet (Scene::hit_packet, book §10.5).
 // A packet finds each ray the hit that ray finds alone, so the pixels are the same, bit for
 // bit; the search tests far fewer boxes for them.
 #include "render/integrator.hpp"
@@ -15,6 +15,10 @@
 #include <span>
 
 namespace rt {
+
+// A packet's pixels: two rows of four (the squarer the packet, the fewer boxes it enters
+// that some of its rays miss; book §10.5).
+inline constexpr int kPacketRows = 2, kPacketColumns = kPacketRays / kPacketRows;
 
 template <class Self>
 class FirstHitIntegrator : public Integrator {
@@ -27,14 +31,13 @@ public:
 
     void trace_centre_tile(const Scene& scene, const View& view, Tile tile, Sampler& sampler, RayCounters& counters,
                            Image& image) const final {
-        constexpr int kRows = 2, kColumns = kPacketRays / kRows;  // the squarer the packet, the fewer boxes
-        for (int y0 = tile.y0; y0 < tile.y1; y0 += kRows)
-            for (int x0 = tile.x0; x0 < tile.x1; x0 += kColumns) {
+        for (int y0 = tile.y0; y0 < tile.y1; y0 += kPacketRows)
+            for (int x0 = tile.x0; x0 < tile.x1; x0 += kPacketColumns) {
                 Ray rays[kPacketRays];
                 int at[kPacketRays][2];  // each ray's pixel (i, y)
                 int n = 0;
-                for (int y = y0; y < std::min(y0 + kRows, tile.y1); ++y)
-                    for (int i = x0; i < std::min(x0 + kColumns, tile.x1); ++i) {
+                for (int y = y0; y < std::min(y0 + kPacketRows, tile.y1); ++y)
+                    for (int i = x0; i < std::min(x0 + kPacketColumns, tile.x1); ++i) {
                         rays[n] = view.pixel_ray(i, image.height - 1 - y);  // image rows go down, v goes up
                         at[n][0] = i;
                         at[n][1] = y;

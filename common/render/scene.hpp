@@ -73,7 +73,7 @@ struct Scene {
         return surfaces.hit(ray, interval, rec);
     }
     // The closest hits of up to eight rays from one point, a pinhole camera's: recs[k], and
-    // bit k of the answer, for ray k, each exactly what hit() finds (book §10.9).
+    // bit k of the answer, for ray k, each exactly what hit() finds (book §10.5).
     unsigned hit_packet(std::span<const Ray> rays, Interval interval, HitRecord* recs) const {
         if (accel) return accel->hit_packet(surfaces, rays, interval, recs);
         return one_by_one(rays.size(), [&](std::size_t k) { return hit(rays[k], interval, recs[k]); });
