@@ -406,7 +406,7 @@ TEST_CASE("10.4 packets of rays at a closed mesh's shared edges and vertices, an
         return p;
     };
     refused.push_back(aimed(Vec3(1, 0, 0)));
-    refused.back().rays[3].origin.x += 1e-9;  // another origin
+    refused.back().rays[3].origin.x += Real(1e-3);  // another origin
     refused.push_back(aimed(Vec3(0, 0, 40)));  // the last rays turn to +z: another octant
     refused.push_back(aimed(Vec3(0, 0, 0)));
     refused.back().rays[5].direction.x = 0;  // a zero component

@@ -8,7 +8,8 @@
 //   any ray of the packet might enter it (Wald et al. 2001's packets, Reshetov et al. 2005's
 //   frusta, Overbeck et al. 2008's ranged traversal);
 // - a leaf's box is then tested against each ray alone, with that ray's own far end, by the
-//   arithmetic of a single ray's search; only the rays that enter it test its items.
+//   single ray's test (its 1/d rounded once more, well within the slack); only the rays that
+//   enter it test its items.
 // Both tests are conservative, as core/wide_bvh.hpp's is (the interval's bounds are taken
 // over the same rounded numbers, and rounding keeps their order), so every leaf a ray's own
 // search would test, this search tests for it: the hits are the same, bit for bit, whatever
