@@ -375,7 +375,8 @@ TEST_CASE("10.4 rays from one point searched as a packet get brute force's hits,
     CHECK(searched > 3000);
 }
 
-TEST_CASE("10.4 packets of rays at a closed mesh's shared edges and vertices, and packets that cannot be, lose nothing") {
+TEST_CASE(
+    "10.4 packets of rays at a closed mesh's shared edges and vertices, and packets that cannot be, lose nothing") {
     // Eight rays from one point through vertices and edge midpoints of an icosphere (ties
     // between triangles: each ray must get brute force's triangle); packets whose rays leave
     // different points, point into different octants, have a zero or subnormal direction
@@ -407,7 +408,7 @@ TEST_CASE("10.4 packets of rays at a closed mesh's shared edges and vertices, an
     };
     refused.push_back(aimed(Vec3(1, 0, 0)));
     refused.back().rays[3].origin.x += Real(1e-3);  // another origin
-    refused.push_back(aimed(Vec3(0, 0, 40)));  // the last rays turn to +z: another octant
+    refused.push_back(aimed(Vec3(0, 0, 40)));       // the last rays turn to +z: another octant
     refused.push_back(aimed(Vec3(0, 0, 0)));
     refused.back().rays[5].direction.x = 0;  // a zero component
     refused.push_back(aimed(Vec3(0, 0, 0)));

@@ -130,6 +130,21 @@ TEST_CASE("sRGB 8-bit codes from the threshold table equal the formula's") {
     CHECK(linear_to_srgb8(7) == 255);
     CHECK(linear_to_srgb8(std::numeric_limits<float>::infinity()) == 255);
     CHECK(linear_to_srgb8(std::numeric_limits<float>::quiet_NaN()) == 0);
+    // A whole image's codes (what a PNG is written from) are each value's, channel by channel.
+    std::vector<Color> pixels;
+    for (std::uint32_t bits = 0; bits <= one + 40000; bits += 4099)
+        pixels.push_back(
+            Color(std::bit_cast<float>(bits), -std::bit_cast<float>(bits), std::bit_cast<float>(one - bits / 2)));
+    pixels.push_back(Color(std::numeric_limits<float>::quiet_NaN(), std::numeric_limits<float>::infinity(), 1));
+    std::vector<std::uint8_t> codes(3 * pixels.size());
+    linear_to_srgb8(pixels, codes.data());
+    long differ = 0;
+    for (std::size_t i = 0; i < pixels.size(); ++i)
+        for (int c = 0; c < 3; ++c) differ += codes[3 * i + std::size_t(c)] != linear_to_srgb8(pixels[i][c]);
+    CHECK(differ == 0);
+    CHECK(codes[codes.size() - 3] == 0);
+    CHECK(codes[codes.size() - 2] == 255);
+    CHECK(codes[codes.size() - 1] == 255);
 }
 
 TEST_CASE("PNG: written sRGB, read back to within one 8-bit step") {

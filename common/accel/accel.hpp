@@ -70,7 +70,8 @@ public:
             if constexpr (requires { a.hit_packet(surfaces, rays, interval, recs); }) {
                 return a.hit_packet(surfaces, rays, interval, recs);
             } else {
-                return one_by_one(rays.size(), [&](std::size_t k) { return a.hit(surfaces, rays[k], interval, recs[k]); });
+                return one_by_one(rays.size(),
+                                  [&](std::size_t k) { return a.hit(surfaces, rays[k], interval, recs[k]); });
             }
         });
     }

@@ -31,8 +31,8 @@ TwoLevelBvh::TwoLevelBvh(const SurfaceList& surfaces) {
 // row of spheres meets several on its way to the nearest, and the record is what costs.
 // best_sphere is that sphere's slot, or kNone when `best` is another item's whole record.
 [[gnu::always_inline]] inline bool TwoLevelBvh::leaf_closest(const SurfaceList& surfaces, const Ray& ray,
-                                                            std::uint32_t first, std::uint32_t count, Interval& iv,
-                                                            HitRecord& best, std::uint32_t& best_sphere) const {
+                                                             std::uint32_t first, std::uint32_t count, Interval& iv,
+                                                             HitRecord& best, std::uint32_t& best_sphere) const {
     bool nearer = false;
     for (std::uint32_t k = first; k < first + count; ++k) {
         if (const std::optional<Sphere>& sphere = spheres_[k]) {

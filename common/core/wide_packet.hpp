@@ -61,11 +61,15 @@ struct WidePacket {
 
 namespace packet_detail {
 
-// The least and the greatest of the lanes, in three halvings.
+// The least and the greatest of the lanes, in three halvings: each lane against the one
+// half, then a quarter, then an eighth of the way round.
 inline float least(WidePacket::F v) {
-    v = v < __builtin_shufflevector(v, v, 4, 5, 6, 7, 0, 1, 2, 3) ? v : __builtin_shufflevector(v, v, 4, 5, 6, 7, 0, 1, 2, 3);
-    v = v < __builtin_shufflevector(v, v, 2, 3, 0, 1, 6, 7, 4, 5) ? v : __builtin_shufflevector(v, v, 2, 3, 0, 1, 6, 7, 4, 5);
-    v = v < __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6) ? v : __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6);
+    WidePacket::F w = __builtin_shufflevector(v, v, 4, 5, 6, 7, 0, 1, 2, 3);
+    v = v < w ? v : w;
+    w = __builtin_shufflevector(v, v, 2, 3, 0, 1, 6, 7, 4, 5);
+    v = v < w ? v : w;
+    w = __builtin_shufflevector(v, v, 1, 0, 3, 2, 5, 4, 7, 6);
+    v = v < w ? v : w;
     return v[0];
 }
 inline float greatest(WidePacket::F v) {
@@ -258,7 +262,8 @@ template <class Leaf, class Fetch>
 void closest_hits(const WideBvh<kPacketRays>& bvh, WidePacket& p, Leaf&& leaf, Fetch&& fetch) {
     [&]<unsigned... kOctants>(std::integer_sequence<unsigned, kOctants...>) {
         (void)((p.octant == kOctants && (closest_hits_from<kOctants>(bvh, p, leaf, fetch), true)) || ...);
-    }(std::make_integer_sequence<unsigned, 8>{});
+    }
+    (std::make_integer_sequence<unsigned, 8>{});
 }
 
 }  // namespace RTLAB_LANES_NAMESPACE

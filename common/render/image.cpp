@@ -4,6 +4,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <limits>
 
 namespace rt {
 
@@ -23,7 +24,7 @@ struct Srgb8Table {
     static constexpr int kShift = 15;
     static constexpr std::size_t kBuckets = std::bit_cast<std::uint32_t>(1.0f) >> kShift;
     std::array<std::uint8_t, kBuckets> first{};
-    std::array<float, 256> next{};  // next[k]: the least float of code k + 1 (1 for k = 255)
+    std::array<float, 256> next{};  // next[k]: the least float of code k + 1 (infinite for k = 255)
 
     static int code(float x) { return int(std::lround(255.0f * linear_to_srgb(x))); }
 
@@ -37,20 +38,37 @@ struct Srgb8Table {
             }
             next[std::size_t(k - 1)] = std::bit_cast<float>(hi);
         }
-        next[255] = 1;
+        next[255] = std::numeric_limits<float>::infinity();
         for (std::size_t b = 0; b < kBuckets; ++b)
             first[b] = std::uint8_t(code(std::bit_cast<float>(std::uint32_t(b << kShift))));
     }
+
+    // The code of one value. Clamped to [0, 1] first (NaN to 0), without a branch: a picture's
+    // channels go both ways at every edge. 1 falls into the last bucket, whose code is 255
+    // or whose next code is.
+    std::uint8_t operator()(float linear) const {
+        const float x = linear > 0 ? (linear < 1 ? linear : 1.0f) : 0.0f;
+        const std::uint8_t base = first[std::min(std::size_t(std::bit_cast<std::uint32_t>(x) >> kShift), kBuckets - 1)];
+        return std::uint8_t(base + (x >= next[base]));
+    }
 };
+
+const Srgb8Table& srgb8_table() {
+    static const Srgb8Table table;
+    return table;
+}
 
 }  // namespace
 
 std::uint8_t linear_to_srgb8(float linear) {
-    static const Srgb8Table table;
-    if (!(linear > 0)) return 0;  // and NaN
-    if (linear >= 1) return 255;
-    const std::uint8_t base = table.first[std::bit_cast<std::uint32_t>(linear) >> Srgb8Table::kShift];
-    return std::uint8_t(base + (linear >= table.next[base]));
+    return srgb8_table()(linear);
+}
+
+void linear_to_srgb8(std::span<const Color> pixels, std::uint8_t* codes) {
+    // The table once, not a guarded static per channel: half of writing a PNG was spent here.
+    const Srgb8Table& table = srgb8_table();
+    for (const Color& p : pixels)
+        for (int c = 0; c < 3; ++c) *codes++ = table(p[c]);
 }
 
 float srgb_to_linear(float c) {

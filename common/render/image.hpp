@@ -3,6 +3,7 @@
 #include "core/real.hpp"
 
 #include <cstdint>
+#include <span>
 #include <string>
 #include <vector>
 
@@ -28,5 +29,7 @@ float srgb_to_linear(float encoded);
 // from a table instead of through pow() (writing an image spent most of its time there).
 // NaN gives 0.
 std::uint8_t linear_to_srgb8(float linear);
+// The same for every channel of `pixels`, three codes a pixel into `codes`.
+void linear_to_srgb8(std::span<const Color> pixels, std::uint8_t* codes);
 
 }  // namespace rt

@@ -44,8 +44,8 @@ inline void check_packet_searches() {
         const double spread = i % 3 ? 0.05 : 1.5;  // neighbouring pixels, or a wide frustum
         std::vector<Ray> rays;
         for (int k = 0; k < 1 + i % kPacketRays; ++k)
-            rays.push_back(Ray{eye, base + Vec3(uniform(-spread, spread), uniform(-spread, spread),
-                                                uniform(-spread, spread))});
+            rays.push_back(
+                Ray{eye, base + Vec3(uniform(-spread, spread), uniform(-spread, spread), uniform(-spread, spread))});
         const Interval interval{i % 5 == 0 ? Real(uniform(0, 4)) : Real(0), i % 7 == 0 ? Real(9) : kInfinity};
         WidePacket packet;
         if (!make_packet(rays, interval, packet)) continue;  // another octant among them
