@@ -9,7 +9,7 @@
 #include "geometry/limits.hpp"
 #include "render/strata.hpp"
 #include "support.hpp"
-#include "support/packet_boxes.hpp"
+#include "support/box_searches.hpp"
 
 #include <algorithm>
 #include <cmath>
@@ -182,7 +182,9 @@ TEST_CASE("flat BVH: the parallel build lays out the same tree on 1 thread as on
     CHECK(bad == 0);
     CHECK(std::count(seen.begin(), seen.end(), 1) == long(boxes.size()));
 }
-TEST_CASE("a packet's search finds each ray the nearest box brute force finds (the lanes of this build)") {
+TEST_CASE("the wide BVH's searches, one ray and a packet at a time, find the nearest box (this build's lanes)") {
+    rt::test::check_searches<4>();
+    rt::test::check_searches<8>();
     rt::test::check_packet_searches();
 }
 

@@ -247,6 +247,24 @@ inline int push_children(const WideNode<W>& node, unsigned mask, const typename 
     return n;
 }
 
+// The `count` children just postponed (refs[0] on), asked for whole from memory now: on a
+// big mesh each is a likely trip to memory, and it is then on its way while the search works
+// elsewhere (book §C.2 records what asking for only the next two cost). A node's lines are
+// prefetched here, a leaf's items by the caller's fetch(first). The child followed at once is
+// read at once anyway.
+template <int W, class Fetch>
+inline void ask_for_postponed(const WideBvh<W>& bvh, const std::uint32_t* refs, int count, Fetch& fetch) {
+    for (int i = 0; i < count; ++i) {
+        const std::uint32_t child = refs[i];
+        if (is_leaf(child)) {
+            fetch(leaf_first(child));
+        } else {
+            const char* p = reinterpret_cast<const char*>(&bvh.nodes[child]);
+            for (int line = 0; line < int(sizeof(WideNode<W>)); line += 64) __builtin_prefetch(p + line);
+        }
+    }
+}
+
 // Both queries walk the tree the same way: the children a ray enters go on a stack with
 // their entry distances, in the order its direction's octant gives (WideNode::order), and the
 // top one is taken next. A leaf is tested whole, leaf(first, count, interval): the caller
@@ -307,18 +325,7 @@ bool traverse_from(const WideBvh<W>& bvh, const WideRay<W>& r, Interval interval
             }
             if (mask != 0) {
                 const int n = push_children<kOctant>(node, mask, t, entered, refs + top, ts + top, ref);
-                // The children postponed are asked for whole now (on a big mesh each is a
-                // likely trip to memory; book §C.2 records what asking for only the next two cost).
-                // The one followed is read at once anyway.
-                for (int i = top; i < top + n - 1; ++i) {
-                    const std::uint32_t child = refs[i];
-                    if (is_leaf(child)) {
-                        fetch(leaf_first(child));
-                    } else {
-                        const char* p = reinterpret_cast<const char*>(&bvh.nodes[child]);
-                        for (int line = 0; line < int(sizeof(WideNode<W>)); line += 64) __builtin_prefetch(p + line);
-                    }
-                }
+                ask_for_postponed(bvh, refs + top, n - 1, fetch);
                 top += n - 1;
                 continue;
             }

@@ -235,15 +235,7 @@ void closest_hits_from(const WideBvh<kPacketRays>& bvh, WidePacket& p, Leaf&& le
                 for (int c = 0; c < W; ++c) lanes_entered[c] = mask >> c & 1 ? -1 : 0;
                 const int n = push_children<kOctant>(node, mask, lo, lanes_entered, refs + top, ts + top, ref,
                                                      child_rays, masks + top, &rays);
-                for (int i = top; i < top + n - 1; ++i) {
-                    const std::uint32_t child = refs[i];
-                    if (is_leaf(child)) {
-                        fetch(leaf_first(child));
-                    } else {
-                        const char* q = reinterpret_cast<const char*>(&bvh.nodes[child]);
-                        for (int line = 0; line < int(sizeof(WideNode<W>)); line += 64) __builtin_prefetch(q + line);
-                    }
-                }
+                ask_for_postponed(bvh, refs + top, n - 1, fetch);
                 top += n - 1;
                 continue;
             }
