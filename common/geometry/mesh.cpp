@@ -94,8 +94,8 @@ Mesh::Mesh(MeshData data) {
     accel_ = build_accel(*data_);
 }
 
-// A mesh query's view of the ray: 1/d once, for the mesh's box, the tree's boxes and the
-// triangles' shear. The shear is made at the first leaf the ray reaches: many rays that
+// A closest-hit query's view of the ray: 1/d once, for the mesh's box, the tree's boxes and
+// the triangles' shear. The shear is made at the first leaf the ray reaches: many rays that
 // come into a mesh's box reach none.
 struct MeshRay {
     const Ray& ray;
@@ -103,16 +103,11 @@ struct MeshRay {
     std::optional<WideRay<kMeshBvhWidth>> wide;
     std::optional<RayShear> shear_;
 
-    // With `box_first`, `wide` stays empty when the ray misses the mesh's box: then nothing
-    // else is made. A closest-hit query asks it: a camera ray at a mesh alone in its scene
-    // meets no other box first, and most such rays that miss the mesh miss its box too.
-    // A shadow ray does not: it leaves a surface, inside this mesh's box when the surface
-    // is the mesh's, and past the upper level's test of the box when it is not, so the
-    // test in double would be paid for nothing (bunny shadow rays, callgrind: 1,106 -> 1,062
-    // instructions unblocked, 1,245 -> 1,201 blocked); the root's eight float boxes still
-    // turn away a ray that misses.
-    MeshRay(const Ray& r, const Mesh& mesh, Interval interval, bool box_first) : ray(r), inv(Real(1) / r.direction) {
-        if (!box_first || might_hit(mesh.box(), ray, inv, interval)) wide.emplace(ray, inv);
+    // `wide` stays empty when the ray misses the mesh's box: then nothing else is made. A
+    // camera ray at a mesh alone in its scene meets no other box first, and most such rays
+    // that miss the mesh miss its box too.
+    MeshRay(const Ray& r, const Mesh& mesh, Interval interval) : ray(r), inv(Real(1) / r.direction) {
+        if (might_hit(mesh.box(), ray, inv, interval)) wide.emplace(ray, inv);
     }
 
     const RayShear& shear() {
@@ -151,7 +146,7 @@ struct Closest {
 bool hit(const Mesh& mesh, const Ray& ray, Interval interval, MeshHit& result) {
     const MeshAccel& a = mesh.accel();
     interval = in_registers(interval);
-    MeshRay r(ray, mesh, interval, true);
+    MeshRay r(ray, mesh, interval);
     if (!r.wide) return false;
     const Real t_min = interval.min;
     Closest best{interval.max};
@@ -205,16 +200,24 @@ unsigned hit_packet(const Mesh& mesh, WidePacket& packet, std::span<const Ray> r
 bool occluded(const Mesh& mesh, const Ray& ray, Interval interval) {
     const MeshAccel& a = mesh.accel();
     interval = in_registers(interval);
-    MeshRay r(ray, mesh, interval, false);
-    if (!r.wide) return false;
-    // The shear made now, not at the first leaf: a shadow ray leaves a surface, so it reaches
-    // at least the leaf of that surface, and made there, inside the search, the call cost the
-    // search's vector registers saved and restored around it.
-    const RayShear& shear = r.shear();
+    // Unlike a camera ray, a shadow ray is not tested against the mesh's box first, and its
+    // shear is made before the search, not at the first leaf. It leaves a surface: inside
+    // this mesh's box when the surface is the mesh's, and past the upper level's test of the
+    // box when it is not, so the test in double would be paid for nothing (bunny shadow rays,
+    // callgrind: 1,106 -> 1,062 instructions unblocked, 1,245 -> 1,201 blocked; the root's
+    // eight float boxes still turn away a ray that misses). And it reaches at least the leaf
+    // of that surface, where making the shear, inside the search, cost the search's vector
+    // registers saved and restored around the call.
+    const Vec3 inv = Real(1) / ray.direction;
+    const WideRay<kMeshBvhWidth> wide(ray, inv);
+    const RayShear shear(ray, inv);
     return any_hit(
-        a.wide, *r.wide, interval,
+        a.wide, wide, interval,
         [&](std::uint32_t b, std::uint32_t, Interval & iv)
-            __attribute__((always_inline)) { return blocks_ray(a.blocks[b], a.corners_of(b), shear, ray, iv); },
+            __attribute__((always_inline)) {
+                return blocks_ray(
+                    a.blocks[b], [&] { return a.corners_of(b); }, shear, ray, iv);
+            },
         [&](std::uint32_t b) { prefetch(a.blocks[b]); });
 }
 

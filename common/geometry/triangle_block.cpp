@@ -4,25 +4,35 @@
 
 #include <algorithm>
 #include <cmath>
-#include <utility>
 
 namespace rt {
 
+namespace {
+
+// The axes in the order kx, ky, kz for each main axis kz and sign of d[kz], as exercise 3.2
+// chooses them: kx and ky follow kz around, swapped where d[kz] < 0.
+constexpr int kAxes[3][2][3] = {{{1, 2, 0}, {2, 1, 0}}, {{2, 0, 1}, {0, 2, 1}}, {{0, 1, 2}, {1, 0, 2}}};
+
+}  // namespace
+
 RayShear::RayShear(const Ray& ray, const Vec3& inv_direction) {
-    const Vec3& d = ray.direction;
-    const Vec3 ad = glm::abs(d);
-    kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
-    kx = (kz + 1) % 3;
-    ky = (kx + 1) % 3;
-    if (d[kz] < 0) std::swap(kx, ky);
+    // Plain arrays: glm's operator[] with an index known only at run time is a switch.
+    const Real d[3] = {ray.direction.x, ray.direction.y, ray.direction.z};
+    const Real o[3] = {ray.origin.x, ray.origin.y, ray.origin.z};
+    const Real inv[3] = {inv_direction.x, inv_direction.y, inv_direction.z};
+    const Real ax = std::abs(d[0]), ay = std::abs(d[1]), az = std::abs(d[2]);
+    const int kz = ax > ay ? (ax > az ? 0 : 2) : (ay > az ? 1 : 2);
+    const int* k = kAxes[kz][d[kz] < 0];
     // Exercise 3.2 divides; a product with 1/d is one rounding in Real away from its quotient,
     // which the filter's margins cover (E counts 16 float roundings, the shear needs ~11).
-    sx = float(d[kx] * inv_direction[kz]);
-    sy = float(d[ky] * inv_direction[kz]);
-    sz = float(inv_direction[kz]);
-    for (int a = 0; a < 3; ++a) origin[a] = float(ray.origin[a]);
-    const Vec3 ao = glm::abs(ray.origin);
-    origin_size = float_above(std::max({ao.x, ao.y, ao.z}));
+    sx = float(d[k[0]] * inv[kz]);
+    sy = float(d[k[1]] * inv[kz]);
+    sz = float(inv[kz]);
+    for (int i = 0; i < 3; ++i) {
+        origin[i] = float(o[k[i]]);
+        offset[i] = std::size_t(k[i]) * sizeof(float[4]);
+    }
+    origin_size = float_above(std::max({std::abs(o[0]), std::abs(o[1]), std::abs(o[2])}));
 }
 
 [[gnu::noinline]] bool blocks_ray_exactly(unsigned lanes, const TriangleBlock& block,

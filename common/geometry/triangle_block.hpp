@@ -13,6 +13,7 @@
 #include <array>
 #include <bit>
 #include <cmath>
+#include <cstddef>
 #include <cstdint>
 #include <cstring>
 #include <limits>
@@ -44,9 +45,11 @@ inline std::array<Vec3, 3> lane_corners(const TriangleBlock& block, int lane) {
 // the axis where the direction is largest becomes z, and the shear that makes the ray point
 // along +z (course §9.3.2; book §3.4), chosen as exercise 3.2 chooses them.
 struct RayShear {
+    // In the order kx, ky, kz: the origin's coordinates, and the byte offset of axis k's
+    // lanes in a block's corner (of p[v][k] from p[v]), so that a leaf reads them as they are.
     float origin[3];
+    std::size_t offset[3];
     float origin_size;  // the largest |coordinate| of the origin, rounded up
-    int kx, ky, kz;
     float sx, sy, sz;
 
     RayShear() = default;  // to be assigned one of the others (a packet's rays make theirs when needed)
@@ -76,8 +79,18 @@ inline Lanes load(const float (&lanes)[4]) {
     return v;
 }
 
+// The lanes of corner p[v] along the axis at byte `offset` (RayShear::offset).
+inline Lanes load(const float (&corner)[3][4], std::size_t offset) {
+    Lanes v;
+    std::memcpy(&v, reinterpret_cast<const char*>(corner) + offset, sizeof v);
+    return v;
+}
+
 inline Lanes larger(Lanes a, Lanes b) {
     return a > b ? a : b;
+}
+inline Lanes smaller(Lanes a, Lanes b) {
+    return a < b ? a : b;
 }
 
 inline constexpr float u = 0x1p-24f;  // float's unit roundoff
@@ -113,12 +126,11 @@ struct BlockLanes {
 template <bool kDistances = true>
 [[gnu::always_inline]] inline BlockLanes classify(const TriangleBlock& block, const RayShear& r, Interval interval) {
     using namespace block_detail;
-    const int k[3] = {r.kx, r.ky, r.kz};
     Lanes x[3], y[3], z[3];  // corner v sheared: x[v], y[v]; z[v] along the ray's main axis
     for (int v = 0; v < 3; ++v) {
-        const Lanes a = load(block.p[v][k[0]]) - r.origin[k[0]];
-        const Lanes b = load(block.p[v][k[1]]) - r.origin[k[1]];
-        z[v] = load(block.p[v][k[2]]) - r.origin[k[2]];
+        const Lanes a = load(block.p[v], r.offset[0]) - r.origin[0];
+        const Lanes b = load(block.p[v], r.offset[1]) - r.origin[1];
+        z[v] = load(block.p[v], r.offset[2]) - r.origin[2];
         x[v] = a - r.sx * z[v];
         y[v] = b - r.sy * z[v];
     }
@@ -131,7 +143,10 @@ template <bool kDistances = true>
     const Lanes U = x[2] * y[1] - y[2] * x[1];
     const Lanes V = x[0] * y[2] - y[0] * x[2];
     const Lanes W = x[1] * y[0] - y[1] * x[0];
-    const Mask inside = ((U >= -m) & (V >= -m) & (W >= -m)) | ((U <= m) & (V <= m) & (W <= m));
+    // All three >= -m or all three <= m, through the least and the greatest. A lane with a
+    // NaN (an overflow) is dropped, as the comparisons one by one drop it, or kept for the
+    // exact test to decide: never a lane they keep dropped.
+    const Mask inside = (smaller(smaller(U, V), W) >= -m) | (larger(larger(U, V), W) <= m);
     const unsigned used = (1u << block.count) - 1;
     const unsigned keep = bits(inside) & used;
     if (!kDistances || keep == 0) return {keep, 0};
@@ -212,10 +227,13 @@ bool for_each_hit(const TriangleBlock& block, const std::array<Vec3, 3>* corners
 bool blocks_ray_exactly(unsigned lanes, const TriangleBlock& block, const std::array<Vec3, 3>* corners, const Ray& ray,
                         Interval interval);
 
-[[gnu::always_inline]] inline bool blocks_ray(const TriangleBlock& block, const std::array<Vec3, 3>* corners,
-                                              const RayShear& shear, const Ray& ray, Interval interval) {
+// corners() gives the block's corners in Real (as for exact_hits), asked only when the exact
+// test runs: worked out in every leaf, it cost about ten instructions a leaf.
+template <class Corners>
+[[gnu::always_inline]] inline bool blocks_ray(const TriangleBlock& block, Corners&& corners, const RayShear& shear,
+                                              const Ray& ray, Interval interval) {
     const BlockLanes lanes = classify(block, shear, interval);
-    return lanes.surely != 0 || (lanes.maybe != 0 && blocks_ray_exactly(lanes.maybe, block, corners, ray, interval));
+    return lanes.surely != 0 || (lanes.maybe != 0 && blocks_ray_exactly(lanes.maybe, block, corners(), ray, interval));
 }
 
 // Triangles packed four to a block in the order given.
