@@ -213,11 +213,10 @@ bool occluded(const Mesh& mesh, const Ray& ray, Interval interval) {
     const RayShear shear(ray, inv);
     return any_hit(
         a.wide, wide, interval,
-        [&](std::uint32_t b, std::uint32_t, Interval & iv)
-            __attribute__((always_inline)) {
-                return blocks_ray(
-                    a.blocks[b], [&] { return a.corners_of(b); }, shear, ray, iv);
-            },
+        [&](std::uint32_t b, std::uint32_t, Interval & iv) __attribute__((always_inline)) {
+            return blocks_ray(
+                a.blocks[b], [&] { return a.corners_of(b); }, shear, ray, iv);
+        },
         [&](std::uint32_t b) { prefetch(a.blocks[b]); });
 }
 
