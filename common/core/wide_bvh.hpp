@@ -120,16 +120,20 @@ inline namespace RTLAB_LANES_NAMESPACE {
 // on its safe side (a distance that comes out negative is one whose exact value is
 // negative too: rounding keeps signs, so it can only lose to tmin). Otherwise both use
 // 1/d, and enter() widens the interval after.
+// The origin is kept negated: plane + (-o) is plane - o to the bit, and an addition can
+// read the plane straight from memory where a subtraction from it needs it loaded first
+// (bunny shadow rays, callgrind: 965 -> 958 instructions unblocked, 1,049 -> 1,042 blocked;
+// the compiler keeps only some of the six in registers).
 template <int W>
 struct RayLanes {
     using F = typename FloatLanes<W>::type;
-    F origin_near[3], origin_far[3], inv_near[3], inv_far[3];
+    F minus_origin_near[3], minus_origin_far[3], inv_near[3], inv_far[3];
 
     RayLanes(const WideRay<W>& r, bool ahead) {
 #pragma GCC unroll 3
         for (int a = 0; a < 3; ++a) {
-            splat(origin_near[a], r.origin_near[a]);
-            splat(origin_far[a], r.origin_far[a]);
+            splat(minus_origin_near[a], -r.origin_near[a]);
+            splat(minus_origin_far[a], -r.origin_far[a]);
             splat(inv_near[a], ahead ? r.inv[a] * (1 - WideRay<W>::kSlack) : r.inv[a]);
             splat(inv_far[a], ahead ? r.inv[a] * (1 + WideRay<W>::kSlack) : r.inv[a]);
         }
@@ -151,10 +155,10 @@ inline unsigned enter(const WideNode<W>& node, const RayLanes<W>& ray, const typ
     F near[3], far[3];
     const char* base = reinterpret_cast<const char*>(&node);
     for (int a = 0; a < 3; ++a) {
-        near[a] =
-            (*reinterpret_cast<const Plane*>(base + near_offset<W, kOctant>(a)) - ray.origin_near[a]) * ray.inv_near[a];
-        far[a] =
-            (*reinterpret_cast<const Plane*>(base + far_offset<W, kOctant>(a)) - ray.origin_far[a]) * ray.inv_far[a];
+        near[a] = (ray.minus_origin_near[a] + *reinterpret_cast<const Plane*>(base + near_offset<W, kOctant>(a))) *
+                  ray.inv_near[a];
+        far[a] = (ray.minus_origin_far[a] + *reinterpret_cast<const Plane*>(base + far_offset<W, kOctant>(a))) *
+                 ray.inv_far[a];
     }
     // The largest entry and smallest exit, as a tree (shorter than a chain). A NaN (0 * inf:
     // the ray lies in a slab's plane) makes `x > y ? x : y` give y: in the inner pair, at
