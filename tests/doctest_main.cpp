@@ -1,11 +1,14 @@
 // The main() of every unit-test program: doctest's, plus what a student needs to read a
 // failure: which exercises this build takes from solutions/; when a test stops at an
 // exercise of an earlier chapter, which one and how to get past it; and, for every test
-// case that fails, one line the grader shows (tools/grade): its first failed check with its
-// values and captured inputs, and which of the student's exercises it ran.
+// case that fails, one line it shows: its first failed check with its values and captured
+// inputs, and which of the student's exercises it ran. The grader (tools/grading/units.py)
+// reads what ran and how it ended from the verdict channel (verdict.hpp), never from what
+// the program prints.
 #define DOCTEST_CONFIG_IMPLEMENT
 #include "core/build_info.hpp"
 #include "core/exercise.hpp"
+#include "verdict.hpp"
 
 #include <doctest/doctest.h>
 
@@ -43,9 +46,12 @@ std::string one_line(std::string s) {
 }
 
 // Prints, for each failing test case, "[rtlab] failed: NAME | FIRST FAILURE | ran your
-// exercises 10.1 10.4". The console reporter still prints everything in full above it.
+// exercises 10.1 10.4" (the console reporter still prints everything in full above it), and
+// records on the verdict channel each test case's start and end by its place in the run
+// (doctest's --first counts the same way), and the list of test cases --list-test-cases asks.
 struct FailureLine : doctest::IReporter {
     const doctest::TestCaseData* test = nullptr;
+    int index = 0;      // the current test case's place among those the run went through, from 1
     std::string first;  // the first failed check of the current test case, with its context
     std::mutex lock;    // checks may be made from several threads
 
@@ -68,6 +74,7 @@ struct FailureLine : doctest::IReporter {
         test = &t;
         first.clear();
         rt::exercise_use::clear();
+        rt::verdict::record("start " + std::to_string(++index) + " " + t.m_name);
     }
     void test_case_reenter(const doctest::TestCaseData&) override {}
     void log_assert(const doctest::AssertData& a) override {
@@ -90,19 +97,32 @@ struct FailureLine : doctest::IReporter {
         if (first.empty()) first = (e.is_crash ? "crashed: " : "threw: ") + one_line(e.error_string.c_str());
     }
     void test_case_end(const doctest::CurrentTestCaseStats& stats) override {
-        if (stats.testCaseSuccess || !test) return;
+        if (!test) return;
+        if (stats.testCaseSuccess) {
+            rt::verdict::record("end " + std::to_string(index) + " passed");
+            return;
+        }
         const std::string ran = rt::exercise_use::list();
-        std::printf("[rtlab] failed: %s | %s | %s\n", test->m_name, first.empty() ? "(no message)" : first.c_str(),
-                    ran.empty() ? "ran none of your exercises" : ("ran your exercises " + ran).c_str());
+        const std::string why = first.empty() ? "(no message)" : first;
+        const std::string exercises = ran.empty() ? "ran none of your exercises" : "ran your exercises " + ran;
+        std::printf("[rtlab] failed: %s | %s | %s\n", test->m_name, why.c_str(), exercises.c_str());
         std::fflush(stdout);
+        rt::verdict::record("end " + std::to_string(index) + " failed " + why + " | " + exercises);
     }
 
-    void report_query(const doctest::QueryData&) override {}
+    void report_query(const doctest::QueryData& q) override {
+        if (!q.data) return;
+        for (unsigned i = 0; i < q.num_data; ++i) rt::verdict::record(std::string("case ") + q.data[i]->m_name);
+    }
     void test_run_start() override {}
     void test_run_end(const doctest::TestRunStats&) override {}
     void subcase_start(const doctest::SubcaseSignature&) override {}
     void subcase_end() override {}
-    void test_case_skipped(const doctest::TestCaseData&) override {}
+    // Counted as doctest's --first counts: a case left out by --first still has its place (the
+    // grader selects only by --first; a case marked skip has none).
+    void test_case_skipped(const doctest::TestCaseData& t) override {
+        if (!t.m_skip) ++index;
+    }
 };
 
 }  // namespace
@@ -135,5 +155,8 @@ int main(int argc, char** argv) {
     if (std::string(rt::build_info::track) == "exercises")
         std::printf("[rtlab] exercises track: chapters from solutions/: %s\n", rt::build_info::from_solutions);
     doctest::Context context(argc, argv);
-    return context.run();
+    const int result = context.run();
+    // The proof that the run went to its end: a test that exits, or crashes, leaves none.
+    rt::verdict::record("complete");
+    return result;
 }

@@ -1,18 +1,14 @@
 #!/usr/bin/env python3
-"""The grade's report: what tools/grade says about the chapters it graded, in one program.
+"""The grade's report: what a grade says about the chapters it graded, in one program.
 
-tools/grade builds, runs each chapter's unit tests (leaving STATE/chNN.unitscore, "passed
-total", and STATE/chNN.unit, one reason line per failing test case) and its golden tests
-(STATE/ctest.txt and each test's output under BUILD/golden), then calls this program, which
-
-1. records each chapter just graded: STATE/chNN.json (the scores, the reasons, a row per
-   golden image) and its pictures in STATE/img/chNN/; then STATE/chNN.key, the key tools/grade
-   compares to leave the chapter cached next time;
-2. prints the scorecard and writes the HTML report from every chapter's record, new or
-   cached, with the reasons per chapter; its exit code checks --expect.
+The grader (tools/grading/) leaves a record per chapter, STATE/chNN.json (the scores, the
+reasons, a row per golden image, the compiler's warnings) with its pictures in STATE/img/chNN/,
+then calls this program, which prints the scorecard and writes the HTML report from every
+chapter's record, new or cached (--graded names the new ones), with the reasons per chapter;
+its exit code checks --expect.
 
   tools/grade_report.py --build DIR --state DIR --report DIR --chapters "NN ..." --solved "NN ..."
-                        [--graded NN=KEY ...] [--units] [--expect none|all]
+                        [--graded NN ...] [--units] [--expect none|all]
 """
 
 import argparse
@@ -20,112 +16,16 @@ import html
 import json
 import re
 import shutil
-import subprocess
 import sys
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parent.parent
+from grading.settings import settings
 
-
-def settings(*names):
-    """Values of tools/settings.cmake, the one place they are stated, as lists of words."""
-    out = subprocess.run(["cmake", "-DGET=" + ";".join(names), "-P", str(ROOT / "tools" / "settings.cmake")],
-                         check=True, capture_output=True, text=True).stdout
-    return [line.split() for line in out.splitlines()]
 
 
 def esc(text):
     """What the page shows as text (quotes are safe outside attributes)."""
     return html.escape(text, quote=False)
-
-
-def read_text(path):
-    """A file the tests may not have written (a render that never ran): None then."""
-    try:
-        return Path(path).read_bytes().decode("utf-8", "replace")
-    except OSError:
-        return None
-
-
-def golden_tests(ch, build, units):
-    """Each golden test of chapter CH: its scene, its reference picture, and where the test
-    left its output (PREFIX.png or PREFIX-yours.png, PREFIX-heatmap.png or PREFIX-map.png,
-    PREFIX.txt). A noisy chapter's tests are statistical (book §14.6): the picture is the
-    reference's mean, which the test writes next to its output."""
-    if units:
-        return []
-    golden = ROOT / "tests" / "golden" / f"ch{ch}"
-    tests = []
-    for ref in sorted(golden.glob("*.png")):
-        if ref.name.endswith(".float.png"):  # Real=float's own reference: not this build's
-            continue
-        scene = ref.name[: -len(".png")]
-        tests.append((scene, Path("tests/golden") / f"ch{ch}" / ref.name, build / "golden" / f"ch{ch}" / scene))
-    for ref in sorted(golden.glob("*.mean.pfm")):
-        scene = ref.name[: -len(".mean.pfm")]
-        out = build / "golden" / f"golden_ch{ch}_{scene}" / scene
-        tests.append((scene, Path(f"{out}-reference.png"), out))
-    return tests
-
-
-def ctest_result(ctest_log, ch, scene):
-    """ctest's word for one test ("Passed", "Failed", "Timeout", ...), or "" when it did not run."""
-    pattern = re.compile(r".*Test +#[0-9]+: golden_ch" + ch + "_" + re.escape(scene) +
-                         r" \.+ *(\*\*\*)?([A-Za-z ]+[a-z]).*")
-    for line in ctest_log.splitlines():
-        m = pattern.fullmatch(line)
-        if m:
-            return m.group(2)
-    return ""
-
-
-def why_it_differs(out, result):
-    """The reason line's words for a golden test that did not pass."""
-    why = (read_text(f"{out}.txt") or "").encode()[:400].decode("utf-8", "replace")
-    why = why.replace("\n", " ").rstrip(" ")
-    if why.startswith("render failed:"):
-        why = "did not render: " + re.sub(r"render failed: *(ch[0-9]+: error: )?", "", why, count=1)
-    elif not why:
-        why = f"did not run ({result or 'no result'})"
-    else:
-        why = "differs past the tolerance: " + why
-    ran = (read_text(f"{out}.uses") or "").rstrip("\n")
-    if ran:
-        why += f" (ran your exercises {ran})"
-    return why
-
-
-def record_chapter(ch, key, args):
-    """Step 1 for chapter CH: its record and pictures, then its key."""
-    state, build = args.state, args.build
-    passed, total = (int(x) for x in (state / f"ch{ch}.unitscore").read_text().split())
-    reasons = (state / f"ch{ch}.unit").read_text().splitlines()
-    ctest_log = read_text(state / "ctest.txt") or ""
-    images = state / "img" / f"ch{ch}"
-    shutil.rmtree(images, ignore_errors=True)
-    images.mkdir(parents=True)
-    rows = []
-    for scene, ref, out in golden_tests(ch, build, args.units):
-        result = ctest_result(ctest_log, ch, scene)
-        if result != "Passed":
-            reasons.append(f"  ch{ch} golden image {scene}: {why_it_differs(out, result)}")
-        score = read_text(f"{out}.txt")
-        yours, heat = Path(f"{out}.png"), Path(f"{out}-heatmap.png")
-        if Path(f"{out}-yours.png").is_file():
-            yours = Path(f"{out}-yours.png")
-        if Path(f"{out}-map.png").is_file():
-            heat = Path(f"{out}-map.png")
-        for source, name in ((ROOT / ref, "reference"), (yours, "yours"), (heat, "heatmap")):
-            if source.is_file():
-                shutil.copyfile(source, images / f"{scene}-{name}.png")
-        rows.append({"scene": scene, "passed": result == "Passed",
-                     "score": "not rendered" if score is None else score.rstrip("\n"),
-                     "yours": yours.is_file(), "heatmap": heat.is_file()})
-    golden_passed = sum(row["passed"] for row in rows)
-    record = {"unit_passed": passed, "unit_total": total, "golden_passed": golden_passed,
-              "golden_total": len(rows), "rows": rows, "reasons": reasons}
-    (state / f"ch{ch}.json").write_text(json.dumps(record, indent=1) + "\n")
-    (state / f"ch{ch}.key").write_text(key + "\n")
 
 
 def chapter_table(ch, record):
@@ -184,7 +84,7 @@ def waiting_line(ch, mine):
 
 def report(args):
     """Step 2: the scorecard on stdout, the HTML report, and the exit code for --expect."""
-    chapters, solved, graded = args.chapters.split(), args.solved.split(), dict(args.graded)
+    chapters, solved, graded = args.chapters.split(), args.solved.split(), set(args.graded)
     records = {}
     for ch in chapters:
         path = args.state / f"ch{ch}.json"
@@ -220,7 +120,7 @@ def report(args):
         " Drag the slider under a comparison to wipe between the reference (left) and yours (right).</p>",
     ]
     card = ["%-8s %-12s %-12s %s" % ("chapter", "unit tests", "golden", "exercises")]
-    reasons, n_cached, ok_none, ok_all = [], 0, True, True
+    reasons, warnings, n_cached, ok_none, ok_all = [], [], 0, True, True
     for ch in chapters:
         r = records[ch]
         passed, total = r["unit_passed"], r["unit_total"]
@@ -240,6 +140,13 @@ def report(args):
             out.append("</ul>")
             reasons += [line for line in mine if not ("is not done yet" in line or "needs exercise " in line)]
             reasons += waiting_line(ch, mine)
+        # What the compiler said of the student's exercises when it built them: worth reading
+        # even when every test passes ("iteration 7 invokes undefined behavior").
+        if r.get("warnings"):
+            out.append("<p>Compiler warnings in your exercises:</p><ul>")
+            out += [f"<li><code>{esc(line.lstrip(' '))}</code></li>" for line in r["warnings"]]
+            out.append("</ul>")
+            warnings += r["warnings"]
         shutil.copytree(args.state / "img" / f"ch{ch}", report_dir / "img" / f"ch{ch}")
         ok_none = ok_none and passed == 0 and g_passed == 0
         ok_all = ok_all and passed == total and g_passed == g_total and total > 0
@@ -251,6 +158,11 @@ def report(args):
         card += reasons[:20]
         if len(reasons) > 20:
             card.append(f"  ... and {len(reasons) - 20} more (see the report)")
+    if warnings:
+        card.append("compiler warnings in your exercises (the report has all):")
+        card += warnings[:10]
+        if len(warnings) > 10:
+            card.append(f"  ... and {len(warnings) - 10} more (see the report)")
     card.append(f"chapters graded: {' '.join(chapters)} ({n_cached} cached)")
     card.append(f"chapters taken from solutions/: {' '.join(solved) or 'none'}")
     card.append(f"report: {page}")
@@ -268,14 +180,10 @@ def main():
     parser.add_argument("--report", type=Path, required=True)
     parser.add_argument("--chapters", required=True)
     parser.add_argument("--solved", default="")
-    parser.add_argument("--graded", action="append", default=[], type=lambda s: tuple(s.split("=", 1)),
-                        metavar="NN=KEY")
+    parser.add_argument("--graded", action="append", default=[], metavar="NN")
     parser.add_argument("--units", action="store_true")
     parser.add_argument("--expect", choices=["none", "all"])
-    args = parser.parse_args()
-    for ch, key in args.graded:
-        record_chapter(ch, key, args)
-    report(args)
+    report(parser.parse_args())
 
 
 if __name__ == "__main__":

@@ -4,8 +4,12 @@
 # keeps a copy or parses this text:
 #   cmake -DGET=RTLAB_CHAPTERS -P tools/settings.cmake    prints  01 02 ... 18
 
-# Chapters in order. Each NN has chapters/chNN_*/, solutions/chNN_*.cpp and exercises/chNN_*.cpp.
+# Chapters in order. Each NN has chapters/chNN_*/ and solutions/chNN_*.cpp (in a students'
+# handout, the compiled tools/reference/ARCH/chNN.o).
 set(RTLAB_CHAPTERS 01 02 03 04 05 06 07 08 09 10 11 12 13 14 15 16 17 18)
+# The chapters students have exercises for: exercises/chNN_*.cpp, unit tests, golden images and
+# a grade. In the lab, all of them; ./lab handout --chapters writes the ones released so far.
+set(RTLAB_RELEASED ${RTLAB_CHAPTERS})
 # Chapters whose images are noise around a mean: graded by the statistical test (book §14.6)
 # against tests/golden/chNN/SCENE.mean.pfm and SCENE.var.pfm, not by a PNG.
 set(RTLAB_NOISY_CHAPTERS 14 15 16 17 18)
