@@ -26,8 +26,12 @@
 // any committed copy differs from what the generator makes (bodies are not compared).
 // With --written nothing is written either: each copy with bodies that are not their stubs
 // is listed as "FILE: 2.1 2.2" (tools/grade warns when such a chapter is graded from solutions/).
+// --transplant is the class grader's (tools/grading/submission.py): the student copy of one
+// solution file with the bodies and helpers of a student's file put in, and nothing else of
+// theirs; OUT_FILE is written only when the student's file parses (else exit 2, one line).
 //
 //   rtlab-genex SOLUTIONS_DIR EXERCISES_DIR [--check | --written] [--force]
+//   rtlab-genex --transplant SOLUTION_FILE STUDENT_FILE OUT_FILE
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -73,6 +77,8 @@ const std::regex kHelpers(R"(^\s*// @helpers\s*$)");
 const std::regex kBookMarker(R"(^\s*// @book(\s+\S+|-end)\s*$)");
 const std::regex kLooksLikeMarker(R"(^\s*//\s*@\s*(exercise|helpers))");
 const std::string kHelpersId = "helpers";
+// A student's file the class grader takes regions from is refused past this size.
+constexpr std::size_t kLargestStudentFile = 1 << 20, kLongestStudentLine = 4096;
 // The helper region's text until the student writes there.
 const std::string kHelpersStub =
     "// Your #includes and helper functions, if any (inside namespace rt { ... } to use the\n"
@@ -198,6 +204,39 @@ int main(int argc, char** argv) {
         return on;
     };
     const bool check = flag("--check"), written = flag("--written"), force = flag("--force");
+    if (flag("--transplant")) {
+        if (args.size() != 3) {
+            std::cerr << "usage: rtlab-genex --transplant SOLUTION_FILE STUDENT_FILE OUT_FILE\n";
+            return 2;
+        }
+        try {
+            const fs::path source(args[0]), student(args[1]), out(args[2]);
+            const Parsed want = generate(source, read_file(source));
+            // The student's file is anyone's: a text of a sane size, with lines the marker
+            // patterns can take, before any parsing.
+            const std::string name = student.filename().string();
+            if (!fs::is_regular_file(fs::symlink_status(student))) throw Failure{name + " is not a plain file"};
+            if (fs::file_size(student) > kLargestStudentFile) throw Failure{name + " is larger than 1 MiB"};
+            const std::string text = read_file(student);
+            if (text.find('\0') != std::string::npos) throw Failure{name + " is not a text file"};
+            std::size_t line = 1, at = 0;
+            for (std::size_t end; (end = text.find('\n', at)) != std::string::npos || at < text.size(); ++line) {
+                if (end == std::string::npos) end = text.size();
+                if (end - at > kLongestStudentLine)
+                    throw Failure{name + ":" + std::to_string(line) + ": a line longer than 4096 characters"};
+                at = end + 1;
+            }
+            const Parsed have = parse(student.filename().string(), text);
+            std::map<std::string, std::string> bodies = want.body;
+            for (const auto& [id, body] : have.body)
+                if (bodies.count(id)) bodies[id] = body;
+            write_file(out, assemble(want, bodies));
+            return 0;
+        } catch (const Failure& f) {
+            std::cerr << "rtlab-genex: " << f.message << '\n';
+            return 2;
+        }
+    }
     if (args.size() != 2) {
         std::cerr << "usage: rtlab-genex SOLUTIONS_DIR EXERCISES_DIR [--check | --written] [--force]\n";
         return 2;

@@ -82,8 +82,9 @@ def waiting_line(ch, mine):
             (f" (or {how})" if how else "")]
 
 
-def report(args):
-    """Step 2: the scorecard on stdout, the HTML report, and the exit code for --expect."""
+def scorecard(args):
+    """The scorecard's lines, and the HTML report written beside it; (lines, nothing passed,
+    everything passed). args.who, when given, names the student (a class's grade)."""
     chapters, solved, graded = args.chapters.split(), args.solved.split(), set(args.graded)
     records = {}
     for ch in chapters:
@@ -109,7 +110,7 @@ def report(args):
         "clip-path:inset(0 50% 0 0)}",
         ".legend{display:inline-block;width:200px;height:12px;background:linear-gradient(to right,#000,#f00,#ff0);"
         "vertical-align:middle}</style>",
-        f"<h1>rtlab grade</h1><p>Chapters graded: {' '.join(chapters)}. Taken from <code>solutions/</code>: "
+        f"<h1>rtlab grade{': ' + esc(args.who) if getattr(args, 'who', '') else ''}</h1><p>Chapters graded: {' '.join(chapters)}. Taken from <code>solutions/</code>: "
         f"{' '.join(solved) or 'none'}. Build: <code>{esc(str(args.build))}</code>.</p>",
         '<p>Heatmap: <span class="legend"></span> black = equal, red = 32 of 255 levels apart, yellow = 64 or more.',
         f" Noisy chapters ({int(min(noisy))} on) are tested statistically (book §14.6): their \"yours\" is the "
@@ -166,6 +167,12 @@ def report(args):
     card.append(f"chapters graded: {' '.join(chapters)} ({n_cached} cached)")
     card.append(f"chapters taken from solutions/: {' '.join(solved) or 'none'}")
     card.append(f"report: {page}")
+    return card, ok_none, ok_all
+
+
+def report(args):
+    """The scorecard on stdout, the HTML report, and the exit code for --expect."""
+    card, ok_none, ok_all = scorecard(args)
     print("\n".join(card), flush=True)
     if args.expect == "none" and not ok_none:
         sys.exit("grade: expected nothing to pass with the stubs")

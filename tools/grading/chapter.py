@@ -28,10 +28,11 @@ def unit_job(runner, program, work, ch, cases):
     if cases is None:
         cases, why = units.list_cases(runner, program, work)
         if cases is None:
-            return {"unit_passed": 0, "unit_total": 0,
+            return {"unit_passed": 0, "unit_total": 0, "units": [],
                     "unit_reasons": [f"  ch{ch} unit tests: the program could not list its tests ({why})"]}
     result = units.score(runner, program, work, cases, ch)
-    return {"unit_passed": result.passed, "unit_total": result.total, "unit_reasons": result.reasons}
+    return {"unit_passed": result.passed, "unit_total": result.total, "unit_reasons": result.reasons,
+            "units": result.cases}
 
 
 def golden_job(runner, judge, program, out, ch, scene, kind, refs):
@@ -64,8 +65,9 @@ def record(ch, parts, units_only, pictures):
     (the report's img/chNN), so the record stands alone when the build is gone."""
     shutil.rmtree(pictures, ignore_errors=True)
     pictures.mkdir(parents=True)
-    rec = {"unit_passed": 0, "unit_total": 0, "rows": [], "reasons": []}
+    rec = {"unit_passed": 0, "unit_total": 0, "units": [], "rows": [], "reasons": []}
     for part in parts:
+        rec["units"] += part.get("units", [])
         rec["unit_passed"] += part.get("unit_passed", 0)
         rec["unit_total"] += part.get("unit_total", 0)
         rec["reasons"] += part.get("unit_reasons", [])
@@ -79,7 +81,8 @@ def record(ch, parts, units_only, pictures):
             row[name] = bool(source) and Path(source).is_file()
             if row[name]:
                 shutil.copyfile(source, pictures / f"{row['scene']}-{name}.png")
-        for transient in ("exercises", "reason", "reason_line", "failed_groups"):
+        row["reason"] = row.pop("reason_line", "").strip()
+        for transient in ("exercises", "failed_groups"):
             row.pop(transient, None)
     rec["golden_passed"] = sum(row["passed"] for row in rec["rows"])
     rec["golden_total"] = len(rec["rows"])
@@ -93,5 +96,6 @@ def not_compiled(ch, cases, why, units_only):
     rows = [] if units_only else [{"scene": scene, "passed": False, "reference": False, "yours": False,
                                    "heatmap": False, "score": "not rendered: the exercises did not compile"}
                                   for scene, _, _ in scenes(ch)]
-    return {"unit_passed": 0, "unit_total": len(cases or []), "rows": rows, "golden_passed": 0,
+    units = [{"name": name, "passed": False, "reason": f"did not compile: {why}"} for name in cases or []]
+    return {"unit_passed": 0, "unit_total": len(cases or []), "units": units, "rows": rows, "golden_passed": 0,
             "golden_total": len(rows), "units_only": units_only, "reasons": [f"  ch{ch} did not compile: {why}"]}

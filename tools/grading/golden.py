@@ -76,8 +76,7 @@ class Judge:
 def render(runner, program, scene, args, output, work, log_name):
     """Renders into the runner's scratch and takes the picture out into `output`. Returns
     (reason, exercises): reason empty when the render succeeded."""
-    inside = Path(runner.scratch) / "renders" / output.name
-    inside.parent.mkdir(parents=True, exist_ok=True) if not runner.sandboxed else None
+    inside = Path(runner.scratch) / f"render-{output.name}"
     log = work / log_name
     outcome = sandbox.run(runner, [str(program), "--scene", scene, *args, "-o", str(inside), "--stats"],
                           cwd=runner.scratch, stdout=log, seconds=RENDER_SECONDS)
@@ -99,7 +98,12 @@ def render(runner, program, scene, args, output, work, log_name):
         if outcome.code < 0 or not last:
             last = outcome.describe()
         return last[:300], exercises
-    if not take(runner.scratch, inside, output):
+    taken = take(runner.scratch, inside, output)
+    try:
+        inside.unlink()  # the scratch folder has a size: keep it for what is still to come
+    except OSError:
+        pass
+    if not taken:
         return "wrote no picture", exercises
     nonfinite = stats.get("nonfinite_samples") if isinstance(stats, dict) else None
     if nonfinite != 0:

@@ -23,6 +23,7 @@ class UnitScore:
     passed: int = 0
     total: int = 0
     reasons: list = field(default_factory=list)  # one line per test case that did not pass
+    cases: list = field(default_factory=list)  # {"name", "passed", "reason"} per test case, in order
 
 
 @dataclass
@@ -176,6 +177,7 @@ def score(runner, program, work, cases, chapter):
     out = UnitScore(total=len(cases))
     for name in cases:
         passed, reason = verdict.get(name, (False, missing_reason))
+        out.cases.append({"name": name, "passed": passed, "reason": "" if passed else reason})
         if passed:
             out.passed += 1
         else:
