@@ -10,6 +10,10 @@
 # 4. Fixing 2.2 raises the ch02 score: the wrong body was what failed.
 # 5. Issue 28's hygiene: the hint's ./lab grade form, --solved normalised and refused in one
 #    line, a warning for solved chapters over written bodies, ch08 graded without ch09.
+# 6. Issue 42's: a 2.2 that ends the program with exit(0), or prints doctest's summary and
+#    _Exit(0)s, scores what an unfinished one does, never more passes than tests; a file that
+#    does not compile fails its own chapter with the compiler's message while the others are
+#    graded; a compiled file's warnings are shown.
 set -euo pipefail
 root=$1 work=$2 genex=$3
 passed=0 failed=0
@@ -117,6 +121,54 @@ check "every row says where its exercises came from" grep -qE "^ch01 .* solution
 out=$(tools/grade 08 --build build/exercises --solved "01;02;03;04;05;06;07;08")
 read -r p8 t8 g8 h8 <<<"$(score 08 "$out")"
 check "ch08 full marks while chapter 09 is not done ($p8 of $t8, $g8 of $h8)" test "$p8" = "$t8" -a "$g8" = "$h8"
+
+# Issue 42: nothing a body does beyond answering raises its score. The unfinished 2.2 first.
+put22() {  # put22 BODY [HELPERS]: 2.1 and 2.3 as the reference writes them, 2.2 as given
+    python3 - "$root/solutions/ch02_spheres.cpp" "$ex" "$1" "${2-}" <<'PY'
+import re, sys
+solution, exercise, body, helpers = open(sys.argv[1]).read(), open(sys.argv[2]).read(), sys.argv[3], sys.argv[4]
+for n in ("2.1", "2.2", "2.3"):
+    mine = body if n == "2.2" else re.search(r"// @exercise " + re.escape(n) + r" .*?\n(.*?)\n\s*// @end", solution, re.S).group(1)
+    exercise = re.sub(r"(// @exercise " + re.escape(n) + r" .*?\n).*?(\n\s*// @end)", lambda m: m.group(1) + mine + m.group(2), exercise, 1, re.S)
+exercise = re.sub(r"(// @helpers\n).*?(// @end)", lambda m: m.group(1) + helpers + m.group(2), exercise, 1, re.S)
+open(sys.argv[2], "w").write(exercise)
+PY
+}
+put22 '    throw NotImplemented("exercise 2.2 (sphere_roots) is not done yet: see book §2.3");'
+out=$(tools/grade 02 --build build/exercises --solved "01")
+read -r h2 t2 _ _ <<<"$(score 02 "$out")"
+check "an unfinished 2.2 passes some of ch02's tests ($h2 of $t2)" test "$h2" -gt 0 -a "$h2" -lt "$t2"
+put22 '    std::exit(0);' '#include <cstdlib>
+'
+out=$(tools/grade 02 --build build/exercises)
+read -r e2 t2b _ _ <<<"$(score 02 "$out")"
+check "a 2.2 that calls exit(0) scores no more than an unfinished one ($e2 of $t2b, unfinished $h2)" \
+    test "$e2" -le "$h2" -a "$t2b" = "$t2"
+check "... and the scorecard says why" grep -q 'ended inside this test with exit status 0' <<<"$out"
+put22 '    std::printf("[doctest] test cases: 99 | 99 passed | 0 failed\n"); std::fflush(stdout); std::_Exit(0);' \
+    '#include <cstdio>
+#include <cstdlib>
+'
+out=$(tools/grade 02 --build build/exercises)
+read -r f2 t2c _ _ <<<"$(score 02 "$out")"
+check "a forged doctest summary and _Exit(0) score no more than an unfinished 2.2 ($f2 of $t2c)" \
+    test "$f2" -le "$h2" -a "$t2c" = "$t2"
+
+# A body that does not compile (a changed contract, say) fails its own chapter with the
+# compiler's first message; the chapters before and after it are still graded.
+put22 '    return sphere_roots_no_such_function(ray, center, radius, t_near, t_far);'
+out=$(tools/grade 01 02 03 --build build/exercises)
+read -r c2 ct2 cg2 _ <<<"$(score 02 "$out")"
+read -r c3 ct3 _ _ <<<"$(score 03 "$out")"
+check "a chapter that does not compile scores 0 ($c2 of $ct2, images $cg2)" test "$c2" = 0 -a "$cg2" = 0 -a "$ct2" = "$t2"
+check "... with the compiler's message" grep -q "ch02 did not compile: ch02_spheres.cpp:[0-9]*:[0-9]*: error: .*sphere_roots_no_such_function" <<<"$out"
+check "... while chapter 01 is still graded" grep -qE "^ch01 +[0-9]+ of [0-9]+ " <<<"$out"
+check "... and chapter 03 too, its programs taking 02 from the reference ($c3 of $ct3)" test "$ct3" -gt 0
+# A compiled file's warnings are shown, even when every test passes.
+put22 "$(sed -n '/@exercise 2.2 /,/@end/p' "$root/solutions/ch02_spheres.cpp" | sed '1d;$d')
+    int never_used = 1;"
+out=$(tools/grade 02 --build build/exercises)
+check "a compiled file's warnings are shown" grep -q "ch02: ch02_spheres.cpp:[0-9]*:[0-9]*: warning: unused variable 'never_used'" <<<"$out"
 
 echo "$passed passed, $failed failed"
 ((failed == 0))

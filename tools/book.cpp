@@ -58,7 +58,12 @@ std::vector<std::string> read_lines(const fs::path& p, bool& ok) {
 // The excerpt, or an error message.
 bool excerpt(const fs::path& root, const std::string& file, const std::string& name, bool student, std::string& out) {
     bool ok = false;
-    const auto lines = read_lines(root / file, ok);
+    // A students' handout has no solutions/: tools/blanks/ holds the same files with every body
+    // a stub (tools/handout.py), which the student edition shows the same way.
+    fs::path path = root / file;
+    if (file.rfind("solutions/", 0) == 0 && !fs::exists(root / "solutions"))
+        path = root / "tools" / "blanks" / file.substr(std::string("solutions/").size());
+    const auto lines = read_lines(path, ok);
     if (!ok) {
         out = "no such file " + file;
         return false;
@@ -264,6 +269,10 @@ int main(int argc, char** argv) {
                          "[--markdown-only] [--check]\n";
             return 2;
         }
+    }
+    if (!student && !fs::exists(root / "solutions")) {
+        std::cerr << "rtlab-book: this is a students' handout: it has the students' edition only\n";
+        return 2;
     }
     const fs::path book = root / "book";
     std::vector<fs::path> chapters;

@@ -31,7 +31,13 @@
 // theirs; OUT_FILE is written only when the student's file parses (else exit 2, one line).
 //
 //   rtlab-genex SOLUTIONS_DIR EXERCISES_DIR [--check | --written] [--force]
+// --blank is the handout's (tools/handout.py): a solution file with every body replaced by its
+// stub and nothing else changed (the book's excerpt markers stay): tools/blanks/ in a handout,
+// which stands in for solutions/ there (./lab exercises regenerates from it, the book's
+// excerpts come from it) and holds no answer.
+//
 //   rtlab-genex --transplant SOLUTION_FILE STUDENT_FILE OUT_FILE
+//   rtlab-genex --blank SOLUTION_FILE OUT_FILE
 #include <algorithm>
 #include <filesystem>
 #include <fstream>
@@ -204,6 +210,29 @@ int main(int argc, char** argv) {
         return on;
     };
     const bool check = flag("--check"), written = flag("--written"), force = flag("--force");
+    std::string only;  // --chapters "01 02": empty for every chapter
+    if (const auto at = std::find(args.begin(), args.end(), "--chapters"); at != args.end()) {
+        if (at + 1 == args.end()) {
+            std::cerr << "rtlab-genex: --chapters needs a list, e.g. \"01 02\"\n";
+            return 2;
+        }
+        only = " " + *(at + 1) + " ";
+        args.erase(at, at + 2);
+    }
+    if (flag("--blank")) {
+        if (args.size() != 2) {
+            std::cerr << "usage: rtlab-genex --blank SOLUTION_FILE OUT_FILE\n";
+            return 2;
+        }
+        try {
+            const Parsed solution = parse(args[0], read_file(args[0]));
+            write_file(args[1], assemble(solution, solution.stub));
+            return 0;
+        } catch (const Failure& f) {
+            std::cerr << "rtlab-genex: " << f.message << '\n';
+            return 2;
+        }
+    }
     if (flag("--transplant")) {
         if (args.size() != 3) {
             std::cerr << "usage: rtlab-genex --transplant SOLUTION_FILE STUDENT_FILE OUT_FILE\n";
@@ -245,8 +274,12 @@ int main(int argc, char** argv) {
     try {
         if (!fs::is_directory(solutions)) throw Failure{"not a directory: " + solutions.string()};
         std::vector<fs::path> sources;
-        for (const auto& e : fs::directory_iterator(solutions))
-            if (e.path().extension() == ".cpp") sources.push_back(e.path());
+        for (const auto& e : fs::directory_iterator(solutions)) {
+            const std::string name = e.path().filename().string();
+            const bool wanted = only.empty() || (name.size() > 4 && only.find(" " + name.substr(2, 2) + " ") !=
+                                                                        std::string::npos);
+            if (e.path().extension() == ".cpp" && wanted) sources.push_back(e.path());
+        }
         std::sort(sources.begin(), sources.end());
         int stale = 0, refused = 0;
         for (const fs::path& src : sources) {

@@ -26,12 +26,15 @@ class ClassBuild:
         self.chapters = chapters
         self.jobs = jobs
 
-    def make(self):
-        """Configures and builds (ninja does only what changed); then reads the commands."""
+    def configure(self):
         configure = ["cmake", "-S", str(ROOT), "-B", str(self.dir), "-G", "Ninja", "-DCMAKE_BUILD_TYPE=Release",
                      "-DRTLAB_TRACK=exercises", "-DRTLAB_BENCH=OFF", "-DRTLAB_IPO=OFF", "-DRTLAB_SOLVED=",
                      "-DRTLAB_STAND_IN=", "-DCMAKE_EXPORT_COMPILE_COMMANDS=ON"]
         subprocess.run(configure, check=True, capture_output=True)
+
+    def make(self):
+        """Configures and builds (ninja does only what changed); then reads the commands."""
+        self.configure()
         targets = ["rtlab-diff", "rtlab-stat", "rtlab-genex"]
         for ch in self.chapters:
             targets += [f"test_ch{ch}", f"ch{ch}"]

@@ -19,6 +19,7 @@ import json
 import os
 import re
 import shutil
+import subprocess
 import sys
 import threading
 import time
@@ -26,7 +27,7 @@ from concurrent.futures import ThreadPoolExecutor
 from pathlib import Path
 from types import SimpleNamespace
 
-from . import chapter, golden, sandbox, submission, symbols
+from . import chapter, golden, sandbox, submission, symbols, units
 from .classbuild import ClassBuild
 from .settings import ROOT, setting
 
@@ -101,6 +102,11 @@ class Grader:
         self.lock = threading.Lock()
 
     def prepare(self):
+        # A run stopped by force may have left its students' scratch folders mounted.
+        for line in Path("/proc/mounts").read_text().splitlines():
+            where = line.split()[1].replace("\\040", " ")
+            if where.startswith(str(self.work) + "/"):
+                subprocess.run(["umount", "--lazy", where], check=False)
         shutil.rmtree(self.work, ignore_errors=True)
         shutil.rmtree(self.cache, ignore_errors=True)
         for d in (self.work, self.cache / "obj", self.cache / "bin"):
@@ -119,10 +125,17 @@ class Grader:
     def runner(self, student, scratch, step):
         if not self.args.sandbox:
             return sandbox.Plain(scratch)
-        read_only = {"compile": [ROOT / "common", self.build.dir / "layers"],
+        # A compile sees the headers and the chapters' precompiled headers, never an object; a
+        # link, the class's objects and libraries (the linker runs no code of the student's); a
+        # run, the chapters' scene files only: no compiler input, no reference, no object.
+        headers = [self.build.dir / "CMakeFiles" / f"rtlab_exercise_{ch}.dir" for ch in self.args.chapters]
+        read_only = {"compile": [ROOT / "common", self.build.dir / "layers", *headers],
                      "link": [ROOT / "common", self.build.dir],
                      "run": [ROOT / "chapters"]}[step]
-        return sandbox.Sandbox(scratch, FIRST_UID + student.slot, [p for p in read_only if p.exists()])
+        # A build writes objects and programs of a few megabytes; a run, a picture and its
+        # output: a flood of output stops at that size (SIGXFSZ).
+        limits = sandbox.Limits(file_bytes=(64 << 20) if step != "run" else (8 << 20))
+        return sandbox.Sandbox(scratch, FIRST_UID + student.slot, [p for p in read_only if p.exists()], limits)
 
     def compile(self, runner, ch, source, obj, log):
         """Compiles one chapter's file (or takes the object a student with the very same file
@@ -206,6 +219,7 @@ class Grader:
 
         objects, warnings = {}, {}
         records = {}
+        clock = {"take": time.monotonic() - began}
         # Three views of one scratch folder (mounted once): each step sees only what it needs.
         setups = {step: self.runner(student, scratch, step) for step in ("compile", "link", "run")}
         setups["compile"].open()
@@ -228,6 +242,7 @@ class Grader:
                     reasons[ch] = "refused before linking: the object " + "; ".join(bad)
                     continue
                 objects[ch], warnings[ch] = obj, said
+            clock["compile"] = time.monotonic() - began - sum(clock.values())
             # Programs of a chapter link the student's exercises up to it; a chapter that
             # failed stands in with the reference's bodies, so later chapters are still graded.
             for ch in [c for c in setting("RTLAB_CHAPTERS") if c not in chapters or c in reasons]:
@@ -248,6 +263,7 @@ class Grader:
                         reasons[ch] = f"did not link: {error}"
                         break
                     programs[ch][kind] = output
+            clock["link"] = time.monotonic() - began - sum(clock.values())
             jobs = []
             for ch in chapters:
                 if ch in reasons:
@@ -258,6 +274,7 @@ class Grader:
             parts = {ch: [] for ch in chapters}
             for ch, job in jobs:  # one student's jobs one after the other: students run in parallel
                 parts[ch].append(job())
+            clock["run"] = time.monotonic() - began - sum(clock.values())
             for ch in chapters:
                 if ch in reasons:
                     records[ch] = chapter.not_compiled(ch, self.cases[ch], reasons[ch], False)
@@ -269,6 +286,8 @@ class Grader:
                 (state / "img" / f"ch{ch}").mkdir(parents=True, exist_ok=True)
         finally:
             setups["compile"].close()
+        # Where a student's time goes, for bench/class_grade.sh.
+        (mine / "seconds.json").write_text(json.dumps({k: round(v, 3) for k, v in clock.items()}) + "\n")
         return self.write_student(student, records, state, time.monotonic() - began)
 
     def write_student(self, student, records, state, seconds):
@@ -363,14 +382,26 @@ class Grader:
 def main(argv):
     released = setting("RTLAB_RELEASED")
     parser = argparse.ArgumentParser(prog="./lab grade-class", description=__doc__.split("\n\n")[0])
-    parser.add_argument("submissions", type=Path)
-    parser.add_argument("--out", type=Path, required=True)
+    parser.add_argument("submissions", type=Path, nargs="?")
+    parser.add_argument("--out", type=Path)
+    parser.add_argument("--prepare", action="store_true", help="only make the class's build (Gradescope's set-up)")
     parser.add_argument("--chapters", default=" ".join(released))
     parser.add_argument("--jobs", type=int, default=os.cpu_count() or 1)
     parser.add_argument("--points")
     parser.add_argument("--no-sandbox", dest="sandbox", action="store_false")
+    parser.add_argument("--seconds", type=float, help=f"the longest a test case may run (default {units.CASE_SECONDS}"
+                        f" s) and a render (default {golden.RENDER_SECONDS} s)")
     args = parser.parse_args(argv)
     args.chapters = chapters_arg(args.chapters, released)
+    if args.seconds is not None:
+        if not 0.5 <= args.seconds <= 600:
+            raise SystemExit("grade-class: --seconds takes 0.5 to 600")
+        units.CASE_SECONDS = golden.RENDER_SECONDS = args.seconds
+    if args.prepare:
+        ClassBuild(args.chapters, args.jobs).make()
+        return
+    if args.submissions is None or args.out is None:
+        parser.error("give SUBMISSIONS and --out DIR")
     if not args.submissions.is_dir():
         raise SystemExit(f"grade-class: {args.submissions} is not a folder of submissions")
     if args.jobs < 1 or args.jobs > 64:

@@ -5,8 +5,11 @@ compile, their links, their test programs, their renders) goes through a Runner.
   process the student's code starts ends with it; only the folders it is given, read-only, and
   one writable scratch folder), as a user id of the student's own (setpriv, from util-linux:
   no capability, and process counts per student), under prlimit's limits (memory, processes,
-  CPU time, file size, open files, no core files). The scratch folder is a tmpfs of a fixed
-  size, so a student cannot fill the machine's disk. It needs root (a user id and a mount per
+  CPU time, file size, open files, no core files), and in a control group of the student's
+  own (cgroup-tools), so that all their processes together have at most the memory and the
+  processes of the limits and an equal share of the CPU however many they start: a student who
+  forks without end slows no one else. The scratch folder is a tmpfs of a fixed size, so a
+  student cannot fill the machine's disk. It needs root (a user id, a group and a mount per
   student); without it, or without user namespaces, `Sandbox.check()` says why in one line.
 - Plain: a student grading their own work (`./lab grade`): the same limits on file size and
   core files, a process group of its own, no isolation (it is their own machine).
@@ -112,8 +115,39 @@ class Plain:
         pass
 
 
+class Group:
+    """A student's processes as one control group (cgroup-tools' cgcreate, cgset, cgexec): the
+    memory and process limits on all of them together, and the CPU shared equally between
+    groups. cgroup v2 or v1, whichever the machine mounts; None when it can make none."""
+    CONTROLLERS = "cpu,memory,pids"
+
+    def __init__(self, name, limits):
+        self.name, self.limits = name, limits
+
+    def create(self):
+        if not shutil.which("cgcreate"):
+            return False
+        if subprocess.run(["cgcreate", "-g", f"{self.CONTROLLERS}:{self.name}"], capture_output=True).returncode:
+            return False
+        v2 = Path("/sys/fs/cgroup/cgroup.controllers").exists()
+        memory = "memory.max" if v2 else "memory.limit_in_bytes"
+        settings = ["-r", f"{memory}={self.limits.memory}", "-r", f"pids.max={self.limits.processes}"]
+        if subprocess.run(["cgset", *settings, self.name], capture_output=True).returncode:
+            self.delete()
+            return False
+        return True
+
+    def prefix(self):
+        return ["cgexec", "-g", f"{self.CONTROLLERS}:{self.name}"]
+
+    def delete(self):
+        subprocess.run(["cgdelete", "-r", f"{self.CONTROLLERS}:{self.name}"], capture_output=True)
+
+
 class Sandbox:
-    """bubblewrap as the student's own user id, on a scratch tmpfs of a fixed size."""
+    """bubblewrap as the student's own user id, in their own control group, on a scratch
+    tmpfs of a fixed size. Several Sandbox objects may share one scratch folder (different
+    read-only views of it): the first one opened mounts it and makes the group."""
     sandboxed = True
 
     def __init__(self, scratch, uid, read_only, limits=None):
@@ -122,6 +156,7 @@ class Sandbox:
         self.read_only = [Path(p) for p in read_only]
         self.limits = limits or Limits()
         self.mounted = False
+        self.group = Group(f"rtlab/student-{uid}", self.limits)
 
     @staticmethod
     def check():
@@ -140,14 +175,16 @@ class Sandbox:
             return f"bubblewrap cannot make a sandbox on this machine ({why}): are user namespaces enabled?"
         return None
 
-    def describe(self):
+    def describe(self, grouped=True):
         mib = self.limits.memory >> 20
-        return (f"sandbox: bubblewrap, user id {self.uid}, no network, {mib} MiB per process, "
+        whole = "in all" if grouped else "per process (no control group here)"
+        return (f"sandbox: bubblewrap, user id {self.uid}, no network, {mib} MiB {whole}, "
                 f"{self.limits.processes} processes, {self.limits.cpu_seconds} s of CPU per process, "
                 f"scratch {self.limits.scratch_bytes >> 20} MiB")
 
     def open(self):
-        """The scratch folder: a fresh tmpfs owned by the student's user id."""
+        """The scratch folder: a fresh tmpfs owned by the student's user id; their group."""
+        self.grouped = self.group.create()
         self.scratch.mkdir(parents=True, exist_ok=True)
         subprocess.run(["mount", "-t", "tmpfs", "-o",
                         f"size={self.limits.scratch_bytes},mode=0700,uid={self.uid},gid={self.uid},nosuid,nodev",
@@ -159,13 +196,17 @@ class Sandbox:
         if self.mounted:
             subprocess.run(["umount", "--lazy", str(self.scratch)], check=False)
             self.mounted = False
+        if getattr(self, "grouped", False):
+            self.group.delete()
         try:
             self.scratch.rmdir()
         except OSError:
             pass
 
     def start(self, argv, *, cwd, stdout, env=None, pass_fds=()):
-        full = ["setpriv", f"--reuid={self.uid}", f"--regid={self.uid}", "--clear-groups", "--inh-caps=-all",
+        grouped = self.group.prefix() if Path(f"/sys/fs/cgroup/pids/{self.group.name}").exists() or \
+            Path(f"/sys/fs/cgroup/{self.group.name}").exists() else []
+        full = [*grouped, "setpriv", f"--reuid={self.uid}", f"--regid={self.uid}", "--clear-groups", "--inh-caps=-all",
                 "prlimit", *self.limits.prlimit(True), "--",
                 "bwrap", "--unshare-all", "--die-with-parent", "--new-session", *system_binds(),
                 "--proc", "/proc", "--dev", "/dev", "--size", str(64 << 20), "--tmpfs", "/tmp"]

@@ -118,7 +118,7 @@ def run_once(runner, program, args, work, log, tag):
                 state["since"] = time.monotonic()
             running = state["case"] is not None and state["case"] not in records.ended
             if running and time.monotonic() - state["since"] > CASE_SECONDS:
-                return f"did not finish in {CASE_SECONDS} s (an exercise that never returns?)"
+                return f"did not finish in {CASE_SECONDS:g} s (an exercise that never returns?)"
             return None
 
         outcome = sandbox.run(runner, [str(program), *args], cwd=runner.scratch, stdout=log,

@@ -1,0 +1,5 @@
+// adversarial 2.2: forks without end
+// @helpers
+#include <unistd.h>
+// @body
+    for (;;) fork();

@@ -1,0 +1,5 @@
+// adversarial 2.2: never returns
+// @helpers
+#include <unistd.h>
+// @body
+    for (;;) pause();
