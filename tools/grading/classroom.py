@@ -21,6 +21,7 @@ import re
 import shutil
 import subprocess
 import sys
+import tempfile
 import threading
 import time
 from concurrent.futures import ThreadPoolExecutor
@@ -105,9 +106,15 @@ class Grader:
         # A run stopped by force may have left its students' scratch folders mounted.
         for line in Path("/proc/mounts").read_text().splitlines():
             where = line.split()[1].replace("\\040", " ")
-            if where.startswith(str(self.work) + "/"):
+            m = re.match(r"^/tmp/rtlab-class-(\d+)-", where)
+            stale = m and not Path(f"/proc/{m.group(1)}").exists()
+            if where.startswith(str(self.work) + "/") or stale:
                 subprocess.run(["umount", "--lazy", where], check=False)
         shutil.rmtree(self.work, ignore_errors=True)
+        # The students' scratch folders, where every user id can reach them (a sandbox runs as
+        # the student, and --out may be anywhere, in a folder only its owner may enter).
+        self.scratch_root = Path(tempfile.mkdtemp(prefix=f"rtlab-class-{os.getpid()}-", dir="/tmp"))
+        os.chmod(self.scratch_root, 0o755)
         shutil.rmtree(self.cache, ignore_errors=True)
         for d in (self.work, self.cache / "obj", self.cache / "bin"):
             d.mkdir(parents=True)
@@ -193,7 +200,7 @@ class Grader:
         began = time.monotonic()
         chapters = self.args.chapters
         mine = self.work / student.folder
-        staged, sources, scratch = mine / "staged", mine / "src", mine / "scratch"
+        staged, sources, scratch = mine / "staged", mine / "src", self.scratch_root / student.folder
         state = mine / "state"
         for d in (staged, sources, state):
             d.mkdir(parents=True)
@@ -349,8 +356,11 @@ class Grader:
                       f"{' (' + rows[k]['error'] + ')' if 'error' in rows[k] else ''}"
                       f"{'' if self.args.sandbox else '  [NO SANDBOX]'}", flush=True)
 
-        with ThreadPoolExecutor(max_workers=self.args.jobs) as pool:
-            list(pool.map(one, range(len(students))))
+        try:
+            with ThreadPoolExecutor(max_workers=self.args.jobs) as pool:
+                list(pool.map(one, range(len(students))))
+        finally:
+            shutil.rmtree(self.scratch_root, ignore_errors=True)
         self.write_gradebook(rows)
         took = time.monotonic() - started
         print(f"grade-class: {len(students)} students, chapters {' '.join(self.args.chapters)}, "
