@@ -57,23 +57,32 @@ prepared=$(date +%s.%N)
 tools/grade-class "$work/submissions" --out "$work/out" --jobs "$jobs" "${sandbox[@]}" | tee "$work/run.txt"
 end=$(date +%s.%N)
 python3 - "$work" "$students" "$jobs" "$start" "$prepared" "$end" "$out_md" "${sandbox[@]}" <<'PY'
-import json, statistics, sys, subprocess
+import json, re, statistics, sys, subprocess
 from pathlib import Path
 work, n, jobs, start, prepared, end, out_md = Path(sys.argv[1]), int(sys.argv[2]), int(sys.argv[3]), *map(float, sys.argv[4:7]), sys.argv[7]
 plain = len(sys.argv) > 8
-steps = [json.loads(p.read_text()) for p in sorted((work / "out" / ".work").glob("*/seconds.json"))]
-per = (end - prepared) * jobs / n
+run = (work / "run.txt").read_text()
+m = re.search(r"students, chapters [0-9 ]+: (\d+) s \(([0-9.]+) s of machine time per student with \d+ at once\), "
+              r"after (\d+) s for the reference", run)
+if not m:
+    sys.exit("class_grade: grade-class did not say its times:\n" + run[-2000:])
+wall, per, reference = float(m[1]), float(m[2]), float(m[3])
+budget = re.search(r"each student's may run (\d+) s in all", run)
+steps = [json.loads(p.read_text()) for p in sorted((work / "out" / ".work").glob("student-*/seconds.json"))]
 cpu = subprocess.run(["sh", "-c", "sed -n 's/^model name\\s*: //p' /proc/cpuinfo | head -1"], capture_output=True, text=True).stdout.strip()
-lines = [f"_Measured by `bench/class_grade.sh` (`./lab bench class-grade`), {n} students, every released chapter, "
+lines = [f"_Measured by `./lab bench class-grade` (`bench/class_grade.sh`): {n} students, every released chapter, "
          f"{jobs} at once{' without the sandbox' if plain else ' in the sandbox'}, on {cpu}._", "",
          "| | seconds |", "|---|---|",
          f"| the class's build, once (`grade-class --prepare`, nothing to rebuild) | {prepared - start:.1f} |",
-         f"| the class, wall time | {end - prepared:.1f} |",
+         f"| the reference, graded first as a student (once per class run) | {reference:.0f} |",
+         f"| the {n} students, wall time | {wall:.0f} |",
          f"| **machine time per student** (wall × {jobs} cores / {n}) | **{per:.1f}** |"]
+if budget:
+    lines.append(f"| a student's runs may take, in all (4 × the reference's) | {budget[1]} |")
 for step in ("take", "compile", "link", "run"):
     values = [s.get(step, 0) for s in steps]
     if values:
-        lines.append(f"| a student's {step} (median, of their wall time) | {statistics.median(values):.1f} |")
+        lines.append(f"| a student's {step} (median, wall) | {statistics.median(values):.1f} |")
 Path(out_md).parent.mkdir(parents=True, exist_ok=True)
 Path(out_md).write_text("\n".join(lines) + "\n")
 print("\n".join(lines))

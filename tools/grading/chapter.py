@@ -21,7 +21,7 @@ def scenes(ch):
     return out
 
 
-def unit_job(runner, program, work, ch, cases):
+def unit_job(runner, program, work, ch, cases, budget=None):
     """The unit tests' part of a chapter's record. `cases`: the trusted list of test names, or
     None to ask the program (a student's own grade)."""
     work.mkdir(parents=True, exist_ok=True)
@@ -30,17 +30,17 @@ def unit_job(runner, program, work, ch, cases):
         if cases is None:
             return {"unit_passed": 0, "unit_total": 0, "units": [],
                     "unit_reasons": [f"  ch{ch} unit tests: the program could not list its tests ({why})"]}
-    result = units.score(runner, program, work, cases, ch)
+    result = units.score(runner, program, work, cases, ch, budget)
     return {"unit_passed": result.passed, "unit_total": result.total, "unit_reasons": result.reasons,
             "units": result.cases}
 
 
-def golden_job(runner, judge, program, out, ch, scene, kind, refs):
+def golden_job(runner, judge, program, out, ch, scene, kind, refs, budget=None):
     """One golden image's row, with the reason line when it did not pass."""
     if kind == "plain":
-        row = golden.plain(runner, judge, program, scene, refs[0], out)
+        row = golden.plain(runner, judge, program, scene, refs[0], out, budget=budget)
     else:
-        row = golden.statistical(runner, judge, program, scene, refs[0], refs[1], out)
+        row = golden.statistical(runner, judge, program, scene, refs[0], refs[1], out, budget=budget)
     if not row["passed"]:
         why = row["reason"]
         if row.get("exercises"):
@@ -49,14 +49,14 @@ def golden_job(runner, judge, program, out, ch, scene, kind, refs):
     return row
 
 
-def jobs(ch, runner, judge, programs, work, cases, units_only):
+def jobs(ch, runner, judge, programs, work, cases, units_only, budget=None):
     """The chapter's work as independent jobs (callables returning a partial record), so that a
-    grade can spread every chapter's jobs over the cores."""
-    out = [lambda: unit_job(runner, programs["test"], work / "units", ch, cases)]
+    grade can spread every chapter's jobs over the cores. `budget`: a class's time per student."""
+    out = [lambda: unit_job(runner, programs["test"], work / "units", ch, cases, budget)]
     if not units_only:
         for scene, kind, refs in scenes(ch):
             out.append(lambda s=scene, k=kind, r=refs: {
-                "rows": [golden_job(runner, judge, programs["chapter"], work / "golden", ch, s, k, r)]})
+                "rows": [golden_job(runner, judge, programs["chapter"], work / "golden", ch, s, k, r, budget)]})
     return out
 
 

@@ -36,6 +36,10 @@ sys.path.insert(0, str(ROOT / "tools"))
 import grade_report  # noqa: E402  (the scorecard and the HTML report, as ./lab grade shows them)
 
 FIRST_UID = 61000  # each student's processes run as FIRST_UID + their slot
+# A student's programs may run, in all, this many times as long as the reference's did when the
+# class's run graded it first (and at least MIN_BUDGET s): an exercise that never returns costs
+# that much, not a minute for every test and render that goes through it.
+BUDGET_FACTOR, MIN_BUDGET = 4, 60
 
 
 def chapters_arg(text, released):
@@ -195,8 +199,9 @@ class Grader:
         shutil.copyfile(output, cached)
         return None
 
-    def grade(self, student):
-        """One student: their records, their report files and their gradebook row."""
+    def grade(self, student, budget=None, report=True):
+        """One student: their records, their report files and their gradebook row (or, with
+        report=False, their records and where their time went)."""
         began = time.monotonic()
         chapters = self.args.chapters
         mine = self.work / student.folder
@@ -277,7 +282,7 @@ class Grader:
                     continue
                 work = mine / "work" / f"ch{ch}"
                 jobs += [(ch, job) for job in chapter.jobs(ch, setups["run"], self.judge, programs[ch], work,
-                                                           self.cases[ch], False)]
+                                                           self.cases[ch], False, budget)]
             parts = {ch: [] for ch in chapters}
             for ch, job in jobs:  # one student's jobs one after the other: students run in parallel
                 parts[ch].append(job())
@@ -295,7 +300,27 @@ class Grader:
             setups["compile"].close()
         # Where a student's time goes, for bench/class_grade.sh.
         (mine / "seconds.json").write_text(json.dumps({k: round(v, 3) for k, v in clock.items()}) + "\n")
+        if not report:
+            return records, clock
         return self.write_student(student, records, state, time.monotonic() - began)
+
+    def calibrate(self, slot):
+        """The reference's own bodies, graded first as a student would be: they must get full
+        marks (else the class's build is broken, and no student's grade would mean anything),
+        and the time their programs take sets every student's budget."""
+        entry = self.work / "reference-submission"
+        (entry / "exercises").mkdir(parents=True)
+        for ch in self.args.chapters:
+            source = self.solutions[ch]
+            why = submission.transplant(self.genex, source, source, entry / "exercises" / self.build.compile[ch]["file"])
+            if why:
+                raise SystemExit(f"grade-class: the reference's own {source.name}: {why}")
+        records, clock = self.grade(Student(entry, slot, "reference-of-the-class"), report=False)
+        wrong = [line for ch in self.args.chapters for line in records[ch]["reasons"]]
+        if wrong:
+            raise SystemExit("grade-class: the reference's own bodies do not get full marks in this class's build, so "
+                             "no student's grade would mean anything; first:\n" + "\n".join(wrong[:10]))
+        return max(MIN_BUDGET, BUDGET_FACTOR * clock["run"]), clock["run"]
 
     def write_student(self, student, records, state, seconds):
         folder = self.out / student.folder
@@ -341,12 +366,11 @@ class Grader:
         for s in students:
             s.folder = folder_name(s.name, taken)
         rows, done = [None] * len(students), [0]
-        started = time.monotonic()
 
         def one(k):
             s = students[k]
             try:
-                rows[k] = self.grade(s)
+                rows[k] = self.grade(s, sandbox.Budget(budget_seconds))
             except Exception as e:  # a bug of the grader's: the class goes on, the row says so
                 rows[k] = {"student": s.name, "folder": s.folder, "total": 0, "error": f"grader error: {e}"}
             with self.lock:
@@ -357,16 +381,22 @@ class Grader:
                       f"{'' if self.args.sandbox else '  [NO SANDBOX]'}", flush=True)
 
         try:
+            calibrated = time.monotonic()
+            budget_seconds, took = self.calibrate(len(students))
+            calibrated = time.monotonic() - calibrated
+            print(f"grade-class: the reference, graded first as a student: full marks, its programs ran {took:.1f} s; "
+                  f"each student's may run {budget_seconds:.0f} s in all", flush=True)
+            started = time.monotonic()
             with ThreadPoolExecutor(max_workers=self.args.jobs) as pool:
                 list(pool.map(one, range(len(students))))
         finally:
             shutil.rmtree(self.scratch_root, ignore_errors=True)
-        self.write_gradebook(rows)
         took = time.monotonic() - started
-        print(f"grade-class: {len(students)} students, chapters {' '.join(self.args.chapters)}, "
-              f"{took:.0f} s ({took * self.args.jobs / max(1, len(students)):.1f} s of machine time per student "
-              f"with {self.args.jobs} at once); gradebook {self.out / 'gradebook.csv'}"
-              f"{'' if self.args.sandbox else '  [NO SANDBOX]'}")
+        self.write_gradebook(rows)
+        print(f"grade-class: {len(students)} students, chapters {' '.join(self.args.chapters)}: {took:.0f} s "
+              f"({took * self.args.jobs / max(1, len(students)):.1f} s of machine time per student with "
+              f"{self.args.jobs} at once), after {calibrated:.0f} s for the reference; gradebook "
+              f"{self.out / 'gradebook.csv'}{'' if self.args.sandbox else '  [NO SANDBOX]'}")
 
     @staticmethod
     def show(name):

@@ -75,13 +75,13 @@ class Judge:
         self.stat = stat_tool
 
 
-def render(runner, program, scene, args, output, work, log_name):
+def render(runner, program, scene, args, output, work, log_name, budget=None):
     """Renders into the runner's scratch and takes the picture out into `output`. Returns
     (reason, exercises): reason empty when the render succeeded."""
     inside = Path(runner.scratch) / f"render-{output.name}"
     log = work / log_name
     outcome = sandbox.run(runner, [str(program), "--scene", scene, *args, "-o", str(inside), "--stats"],
-                          cwd=runner.scratch, stdout=log, seconds=RENDER_SECONDS)
+                          cwd=runner.scratch, stdout=log, seconds=RENDER_SECONDS, budget=budget)
     text = log.read_bytes()[:1 << 20].decode("utf-8", "replace") if log.exists() else ""
     stats = None
     for line in reversed(text.splitlines()):
@@ -94,6 +94,8 @@ def render(runner, program, scene, args, output, work, log_name):
     exercises = stats.get("your_exercises", "") if isinstance(stats, dict) else ""
     exercises = exercises if isinstance(exercises, str) else ""
     if outcome.stopped:
+        if budget is not None and outcome.stopped == budget.reason():
+            return outcome.stopped, exercises
         return f"did not finish in {RENDER_SECONDS:g} s (an exercise that never returns?)", exercises
     if outcome.code != 0:
         last = next((line for line in reversed(text.splitlines()) if line.strip()), "")
@@ -114,7 +116,7 @@ def render(runner, program, scene, args, output, work, log_name):
     return "", exercises
 
 
-def plain(runner, judge, program, scene, reference, out, extra=()):
+def plain(runner, judge, program, scene, reference, out, extra=(), budget=None):
     """A picture against its reference within the tolerance. Returns the row the report shows."""
     args, tolerance = settings("RTLAB_GOLDEN_ARGS", "RTLAB_GOLDEN_TOLERANCE")
     out.mkdir(parents=True, exist_ok=True)
@@ -122,7 +124,7 @@ def plain(runner, judge, program, scene, reference, out, extra=()):
     for stale in (yours, heatmap):
         stale.unlink(missing_ok=True)
     row = {"scene": scene, "passed": False, "reference": str(reference), "yours": None, "heatmap": None}
-    why, exercises = render(runner, program, scene, [*args, *extra], yours, out, f"{scene}.render.log")
+    why, exercises = render(runner, program, scene, [*args, *extra], yours, out, f"{scene}.render.log", budget)
     row["exercises"] = exercises
     if why:
         row.update(score="not rendered", reason=f"did not render: {why}")
@@ -137,7 +139,7 @@ def plain(runner, judge, program, scene, reference, out, extra=()):
     return row
 
 
-def statistical(runner, judge, program, scene, mean, var, out, extra=(), groups=1, first_seed=None):
+def statistical(runner, judge, program, scene, mean, var, out, extra=(), groups=1, first_seed=None, budget=None):
     """The average of the seeds' renders tested against the reference's mean (book §14.6); with
     groups > 1, that many groups of seeds, and the row counts the groups that failed."""
     args, seeds, tolerance = settings("RTLAB_STAT_ARGS", "RTLAB_STAT_SEEDS", "RTLAB_STAT_TOLERANCE")
@@ -158,7 +160,7 @@ def statistical(runner, judge, program, scene, mean, var, out, extra=(), groups=
             seed = first_seed + group * len(seeds) + k
             image = out / f"{scene}-{seed}.pfm"
             why, exercises = render(runner, program, scene, [*args, *extra, "--seed", str(seed)], image, out,
-                                    f"{scene}.render.log")
+                                    f"{scene}.render.log", budget)
             row["exercises"] = exercises
             if why:
                 for done in images:

@@ -258,9 +258,31 @@ class Outcome:
         return f"exit status {self.code}"
 
 
-def run(runner, argv, *, cwd, stdout, seconds, env=None, pass_fds=(), watch=None):
-    """Runs argv and waits at most `seconds`; `watch`, asked every 50 ms, may return a reason to
-    stop it early. Returns an Outcome."""
+class Budget:
+    """A student's time for all their programs' runs (a class's grade): once it is spent, what is
+    left fails without running. None of it is spent before the first run."""
+
+    def __init__(self, seconds):
+        self.seconds, self.end = seconds, None
+
+    def left(self):
+        if self.end is None:
+            self.end = time.monotonic() + self.seconds
+        return self.end - time.monotonic()
+
+    def reason(self):
+        return f"not run to its end: your programs had used up the {self.seconds:.0f} s a student's runs may take"
+
+
+def run(runner, argv, *, cwd, stdout, seconds, env=None, pass_fds=(), watch=None, budget=None):
+    """Runs argv and waits at most `seconds` (and what is left of `budget`); `watch`, asked every
+    50 ms, may return a reason to stop it early. Returns an Outcome."""
+    limit, why = seconds, f"did not finish in {seconds:g} s"
+    if budget is not None and budget.left() < limit:
+        limit, why = budget.left(), budget.reason()
+        if limit <= 0:
+            Path(stdout).write_bytes(b"")
+            return Outcome(code=-9, stopped=why)
     began = time.monotonic()
     process = runner.start(argv, cwd=cwd, stdout=stdout, env=env, pass_fds=pass_fds)
     stopped = ""
@@ -270,8 +292,8 @@ def run(runner, argv, *, cwd, stdout, seconds, env=None, pass_fds=(), watch=None
             break
         except subprocess.TimeoutExpired:
             pass
-        if time.monotonic() - began > seconds:
-            stopped = f"did not finish in {seconds:g} s"
+        if time.monotonic() - began > limit:
+            stopped = why
         elif watch:
             stopped = watch() or ""
         if stopped:

@@ -14,7 +14,8 @@ from pathlib import Path
 
 from . import sandbox
 
-CASE_SECONDS = 10  # a test case running longer is stopped: an exercise that never returns
+CASE_SECONDS = 30  # a test case running longer is stopped: an exercise that never returns (the longest
+# of the lab's own, a sweep against brute force, takes a few seconds alone, 10 beside a class)
 START_SECONDS = 60  # the time a run may take to start its first test case (or to list them)
 
 
@@ -103,7 +104,7 @@ class Channel:
             return Records()
 
 
-def run_once(runner, program, args, work, log, tag):
+def run_once(runner, program, args, work, log, tag, budget=None):
     """One run of the program through a fresh channel; (Records, Outcome)."""
     channel = Channel(work / f"verdict-{tag}.txt")
     with channel:
@@ -123,7 +124,7 @@ def run_once(runner, program, args, work, log, tag):
 
         outcome = sandbox.run(runner, [str(program), *args], cwd=runner.scratch, stdout=log,
                               seconds=START_SECONDS + CASE_SECONDS * 200, env=channel.env, pass_fds=channel.fds,
-                              watch=watch)
+                              watch=watch, budget=budget)
         return channel.read(), outcome
 
 
@@ -137,7 +138,7 @@ def list_cases(runner, program, work):
     return records.cases, ""
 
 
-def score(runner, program, work, cases, chapter):
+def score(runner, program, work, cases, chapter, budget=None):
     """Runs the chapter's test program until every case in `cases` (the trusted list of names)
     has a verdict. Returns a UnitScore whose passed never exceeds len(cases)."""
     work = Path(work)
@@ -146,7 +147,8 @@ def score(runner, program, work, cases, chapter):
     while True:
         run_number += 1
         log = work / f"units-{run_number}.log"
-        records, outcome = run_once(runner, program, ["--no-colors", f"--first={first}"], work, log, run_number)
+        records, outcome = run_once(runner, program, ["--no-colors", f"--first={first}"], work, log, run_number,
+                                    budget)
         for index in sorted(records.started):
             name = records.started[index]
             passed, reason = records.ended.get(index, (False, None))
@@ -170,6 +172,8 @@ def score(runner, program, work, cases, chapter):
             break
     if records.complete:
         missing_reason = "did not run (not in this program: was it renamed?)"
+    elif budget is not None and outcome.stopped == budget.reason():
+        missing_reason = outcome.stopped
     elif not records.began:
         missing_reason = f"the program ended before the harness started ({outcome.describe()})"
     else:
