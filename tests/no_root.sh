@@ -4,7 +4,7 @@
 #  1. With dpkg's database empty for it (DPKG_ADMINDIR: dpkg-query finds nothing installed),
 #     ./lab run, ./lab test and ./lab grade each exit 2 with one line `sudo apt-get install ...`
 #     naming the packages they need, call neither sudo nor apt-get, and change no file.
-#  2. ./lab deps (everything there) exits 0 and calls neither.
+#  2. ./lab deps test (everything there: ./lab test made sure) exits 0 and calls neither.
 #  3. ./lab grade 01 --solved 01 builds chapter 1's programs and grades them: every test passes.
 # Run as root (./lab test in CI), all of it runs as the throwaway user nobody (setpriv), with a
 # home of its own in a scratch folder that is removed afterwards; run as anyone else, as that
@@ -56,8 +56,8 @@ done
 [[ ! -e $scratch/called ]] || fail "./lab with packages missing called: $(cat "$scratch/called")"
 
 # 2. Everything installed: nothing to do.
-"${as_user[@]}" "${user_env[@]}" "$copy/lab" deps || fail "./lab deps exited $? with every package installed"
-[[ ! -e $scratch/called ]] || fail "./lab deps with every package installed called: $(cat "$scratch/called")"
+"${as_user[@]}" "${user_env[@]}" "$copy/lab" deps test || fail "./lab deps test exited $? with its packages installed"
+[[ ! -e $scratch/called ]] || fail "./lab deps test with its packages installed called: $(cat "$scratch/called")"
 
 # 3. A build and a grade, as that user.
 if ((EUID == 0)); then
@@ -69,4 +69,4 @@ fi
 if ((failures)); then
     exit 1
 fi
-echo "no_root: as $who: ./lab run, test and grade refuse with one install line and change nothing when packages are missing; ./lab deps has nothing to do$( ((EUID == 0)) && echo "; ./lab grade 01 built and passed")"
+echo "no_root: as $who: ./lab run, test and grade refuse with one install line and change nothing when packages are missing; ./lab deps test has nothing to do$( ((EUID == 0)) && echo "; ./lab grade 01 built and passed")"
