@@ -476,14 +476,11 @@ void measure(const Input& input, int size, int frame, int rounds, bool classes, 
     // Like for like: each side finds the closest hit and gives its t, triangle and
     // barycentrics (the mesh's own search: the fast path's lower level, all of it for a
     // scene of one mesh), or answers whether anything blocks a shadow ray.
-    row(
-        "primary", primary, [&](const Ray& r) { return lab_primary(mesh, r); }, embree_primary);
-    row(
-        "shadow", shadow,
-        [&](const Ray& r) {
-            return occluded(mesh, r, Interval{0, 1});
-        },
-        [&](const Ray& r) { return embree.occluded(r, 1.0f); });
+    const auto lab_hit = [&](const Ray& r) { return lab_primary(mesh, r); };
+    const auto lab_occluded = [&](const Ray& r) { return occluded(mesh, r, Interval{0, 1}); };
+    const auto embree_occluded = [&](const Ray& r) { return embree.occluded(r, 1.0f); };
+    row("primary", primary, lab_hit, embree_primary);
+    row("shadow", shadow, lab_occluded, embree_occluded);
     // What the renderer calls: the closest hit through the scene's search, made into the
     // whole HitRecord (point, unit normal, surface) that shading reads. Embree's side is the
     // same rtcIntersect1 as above: what it returns is not a record.

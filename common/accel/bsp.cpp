@@ -242,11 +242,9 @@ bool Bsp::occluded(const SurfaceList& surfaces, const Ray& ray, Interval interva
 
 int Bsp::depth() const {
     if (root_ == kNone) return 0;
-    return tree_depth(
-        root_, [&](BspRef ref) { return nodes_[ref].leaf(); },
-        [&](BspRef ref) {
-            return std::pair{nodes_[ref].left, nodes_[ref].right};
-        });
+    const auto is_leaf = [&](BspRef ref) { return nodes_[ref].leaf(); };
+    const auto children = [&](BspRef ref) { return std::pair{nodes_[ref].left, nodes_[ref].right}; };
+    return tree_depth(root_, is_leaf, children);
 }
 
 }  // namespace rt

@@ -106,11 +106,9 @@ bool Bvh::occluded(const SurfaceList& surfaces, const Ray& ray, Interval interva
 
 int Bvh::depth() const {
     if (root_ == kNone || is_primitive(root_)) return 0;
-    return tree_depth(
-        root_, [&](BvhRef ref) { return is_primitive(ref); },
-        [&](BvhRef ref) {
-            return std::pair{nodes_[ref].left, nodes_[ref].right};
-        });
+    const auto is_leaf = [&](BvhRef ref) { return is_primitive(ref); };
+    const auto children = [&](BvhRef ref) { return std::pair{nodes_[ref].left, nodes_[ref].right}; };
+    return tree_depth(root_, is_leaf, children);
 }
 
 }  // namespace rt

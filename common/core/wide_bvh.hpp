@@ -106,7 +106,7 @@ constexpr std::size_t near_offset(int a) {
 }
 template <int W, unsigned kOctant>
 constexpr std::size_t far_offset(int a) {
-    return near_offset<W, kOctant ^ 7u>(a);  // the far side is the near one of the opposite octant
+    return near_offset<W, (kOctant ^ 7u)>(a);  // the far side is the near one of the opposite octant
 }
 
 // What follows computes in lanes, and so is compiled one way per choice of core/wide_lanes.hpp.

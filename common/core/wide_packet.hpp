@@ -252,10 +252,10 @@ void closest_hits_from(const WideBvh<kPacketRays>& bvh, WidePacket& p, Leaf&& le
 
 template <class Leaf, class Fetch>
 void closest_hits(const WideBvh<kPacketRays>& bvh, WidePacket& p, Leaf&& leaf, Fetch&& fetch) {
-    [&]<unsigned... kOctants>(std::integer_sequence<unsigned, kOctants...>) {
+    const auto search_in_octant = [&]<unsigned... kOctants>(std::integer_sequence<unsigned, kOctants...>) {
         (void)((p.octant == kOctants && (closest_hits_from<kOctants>(bvh, p, leaf, fetch), true)) || ...);
-    }
-    (std::make_integer_sequence<unsigned, 8>{});
+    };
+    search_in_octant(std::make_integer_sequence<unsigned, 8>{});
 }
 
 }  // namespace RTLAB_LANES_NAMESPACE

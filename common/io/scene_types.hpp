@@ -36,14 +36,10 @@ struct LightType {
 // "sphere", read by read_sphere.
 #define RTLAB_SURFACE_TYPE(type, reader)          \
     extern const SurfaceType surface_type_##type; \
-    const SurfaceType surface_type_##type {       \
-#type, reader                             \
-    }
+    const SurfaceType surface_type_##type = {#type, reader}
 #define RTLAB_LIGHT_TYPE(type, reader)        \
     extern const LightType light_type_##type; \
-    const LightType light_type_##type {       \
-#type, reader                         \
-    }
+    const LightType light_type_##type = {#type, reader}
 
 // Every type, in the schema's order (generated: build/.../io_types.cpp).
 const std::vector<const SurfaceType*>& surface_types();
