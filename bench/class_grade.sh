@@ -78,7 +78,7 @@ lines = [f"_Measured by `./lab bench class-grade` (`bench/class_grade.sh`): {n} 
          f"| the {n} students, wall time | {wall:.0f} |",
          f"| **machine time per student** (wall × {jobs} cores / {n}) | **{per:.1f}** |"]
 if budget:
-    lines.append(f"| a student's runs may take, in all (4 × the reference's) | {budget[1]} |")
+    lines.append(f"| a student's runs may take, in all (3 × the reference's) | {budget[1]} |")
 for step in ("take", "compile", "link", "run"):
     values = [s.get(step, 0) for s in steps]
     if values:

@@ -58,7 +58,9 @@ void open_channel(int, char**, char** envp) {
 
 namespace rt::verdict {
 
-bool listening() { return channel >= 0; }
+bool listening() {
+    return channel >= 0;
+}
 
 void record(const std::string& what) {
     if (channel < 0) return;

@@ -276,8 +276,8 @@ int main(int argc, char** argv) {
         std::vector<fs::path> sources;
         for (const auto& e : fs::directory_iterator(solutions)) {
             const std::string name = e.path().filename().string();
-            const bool wanted = only.empty() || (name.size() > 4 && only.find(" " + name.substr(2, 2) + " ") !=
-                                                                        std::string::npos);
+            const bool wanted =
+                only.empty() || (name.size() > 4 && only.find(" " + name.substr(2, 2) + " ") != std::string::npos);
             if (e.path().extension() == ".cpp" && wanted) sources.push_back(e.path());
         }
         std::sort(sources.begin(), sources.end());

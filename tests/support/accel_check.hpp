@@ -8,6 +8,7 @@
 
 #include <pcg_random.hpp>
 
+#include <array>
 #include <memory>
 #include <random>
 #include <span>
@@ -180,7 +181,13 @@ struct Packet {
 // packet search itself was tested, not only the fallback of one ray at a time.
 inline int packet_disagreements(const SurfaceList& list, const std::vector<Packet>& packets,
                                 std::span<const AccelKind> structures, int* searched = nullptr) {
+    // Brute force's answers once, then every structure against them.
     const Accel brute(list, AccelKind::none);
+    std::vector<std::array<HitRecord, kPacketRays>> want(packets.size());
+    std::vector<unsigned> want_hits(packets.size(), 0);
+    for (std::size_t j = 0; j < packets.size(); ++j)
+        for (std::size_t k = 0; k < packets[j].rays.size(); ++k)
+            want_hits[j] |= unsigned(brute.hit(list, packets[j].rays[k], packets[j].interval, want[j][k])) << k;
     int failures = 0;
     if (searched) {
         *searched = 0;
@@ -198,8 +205,7 @@ inline int packet_disagreements(const SurfaceList& list, const std::vector<Packe
             HitRecord got[kPacketRays];
             const unsigned found = accel.hit_packet(list, p.rays, p.interval, got);
             for (std::size_t k = 0; k < p.rays.size(); ++k) {
-                HitRecord want;
-                const bool want_hit = brute.hit(list, p.rays[k], p.interval, want);
+                const bool want_hit = want_hits[j] >> k & 1;
                 const Ray& ray = p.rays[k];
                 const Interval& interval = p.interval;
                 CAPTURE(j);
@@ -208,11 +214,11 @@ inline int packet_disagreements(const SurfaceList& list, const std::vector<Packe
                 CAPTURE(interval);
                 RT_CHECK_FIRST(failures, bool(found >> k & 1) == want_hit);
                 if (want_hit && (found >> k & 1)) {
-                    RT_CHECK_FIRST(failures, got[k].t == want.t);
-                    RT_CHECK_FIRST(failures, got[k].surface == want.surface);
-                    RT_CHECK_FIRST(failures, got[k].primitive == want.primitive);
-                    RT_CHECK_FIRST(failures, got[k].p == want.p);
-                    RT_CHECK_FIRST(failures, got[k].normal == want.normal);
+                    RT_CHECK_FIRST(failures, got[k].t == want[j][k].t);
+                    RT_CHECK_FIRST(failures, got[k].surface == want[j][k].surface);
+                    RT_CHECK_FIRST(failures, got[k].primitive == want[j][k].primitive);
+                    RT_CHECK_FIRST(failures, got[k].p == want[j][k].p);
+                    RT_CHECK_FIRST(failures, got[k].normal == want[j][k].normal);
                 }
             }
             RT_CHECK_FIRST(failures, (found >> p.rays.size()) == 0u);

@@ -39,7 +39,7 @@ FIRST_UID = 61000  # each student's processes run as FIRST_UID + their slot
 # A student's programs may run, in all, this many times as long as the reference's did when the
 # class's run graded it first (and at least MIN_BUDGET s): an exercise that never returns costs
 # that much, not a minute for every test and render that goes through it.
-BUDGET_FACTOR, MIN_BUDGET = 4, 60
+BUDGET_FACTOR, MIN_BUDGET = 3, 60
 
 
 def chapters_arg(text, released):
@@ -148,56 +148,77 @@ class Grader:
         limits = sandbox.Limits(file_bytes=(64 << 20) if step != "run" else (8 << 20))
         return sandbox.Sandbox(scratch, FIRST_UID + student.slot, [p for p in read_only if p.exists()], limits)
 
-    def compile(self, runner, ch, source, obj, log):
-        """Compiles one chapter's file (or takes the object a student with the very same file
-        had): (error or None, warnings)."""
-        spec = self.build.compile[ch]
-        argv = [w.replace("{SOURCE}", str(source)).replace("{OUTPUT}", str(obj)) for w in spec["argv"]]
-        key = hashlib.sha256(source.read_bytes() + "\0".join(spec["argv"]).encode()).hexdigest()
-        cached, said = self.cache / "obj" / f"{key}.o", self.cache / "obj" / f"{key}.txt"
-        if cached.exists() and said.exists():
-            shutil.copyfile(cached, obj)
-            text = said.read_text()
-            ok = True
-        else:
-            outcome = sandbox.run(runner, argv, cwd=spec["cwd"], stdout=log, seconds=120)
-            text = log.read_bytes()[:1 << 20].decode("utf-8", "replace")
-            ok = outcome.code == 0 and not outcome.stopped and golden.take(runner.scratch, obj, str(obj) + ".taken")
+    def compile_all(self, runner, files, log):
+        """Compiles chapters' files ({chapter: (source, object)}) in one start of the sandbox, each
+        once: an object a student with the very same file had is taken from the class's cache.
+        Returns {chapter: (error or None, warnings)}."""
+        from .build import diagnostics
+        todo, texts, keys = [], {}, {}
+        for ch, (source, obj) in files.items():
+            spec = self.build.compile[ch]
+            keys[ch] = hashlib.sha256(source.read_bytes() + "\0".join(spec["argv"]).encode()).hexdigest()
+            cached, said = self.cache / "obj" / f"{keys[ch]}.o", self.cache / "obj" / f"{keys[ch]}.txt"
+            if cached.exists() and said.exists():
+                shutil.copyfile(cached, obj)
+                texts[ch] = (True, said.read_text())
+            else:
+                todo.append(ch)
+        commands = [[w.replace("{SOURCE}", str(files[ch][0])).replace("{OUTPUT}", str(files[ch][1]))
+                     for w in self.build.compile[ch]["argv"]] for ch in todo]
+        cwd = self.build.compile[todo[0]]["cwd"] if todo else "/"
+        for ch, (outcome, text) in zip(todo, sandbox.run_batch(runner, commands, cwd=cwd, seconds_each=120, log=log)):
+            obj = files[ch][1]
+            ok = outcome.code == 0 and golden.take(runner.scratch, obj, str(obj) + ".taken")
             if outcome.stopped:
-                text += f"\nexercises/{spec['file']}: error: the compiler {outcome.stopped}"
+                text += f"\nexercises/{self.build.compile[ch]['file']}: error: the compiler {outcome.stopped}"
             if ok:
                 os.replace(str(obj) + ".taken", obj)
                 # Stored now, before any code of the student's has run: nothing can change it.
-                shutil.copyfile(obj, cached)
-                said.write_text(text)
-        from .build import diagnostics
-        found = diagnostics(text.replace(str(source), f"exercises/{spec['file']}")).get(ch, {})
-        if not ok:
-            return found.get("error") or (text.strip().splitlines() or ["the compiler failed"])[-1][:300], []
-        return None, found.get("warnings", [])
+                shutil.copyfile(obj, self.cache / "obj" / f"{keys[ch]}.o")
+                (self.cache / "obj" / f"{keys[ch]}.txt").write_text(text)
+            texts[ch] = (ok, text)
+        out = {}
+        for ch, (ok, text) in texts.items():
+            spec = self.build.compile[ch]
+            found = diagnostics(text.replace(str(files[ch][0]), f"exercises/{spec['file']}")).get(ch, {})
+            if ok:
+                out[ch] = (None, found.get("warnings", []))
+            else:
+                out[ch] = (found.get("error") or (text.strip().splitlines() or ["the compiler failed"])[-1][:300], [])
+        return out
 
-    def link(self, runner, program, objects, output, log):
-        """Links one program from the class's build and the student's objects ({chapter: path});
-        the linker's first error line, or None."""
-        argv = []
-        for word in self.build.link[program]:
-            m = re.fullmatch(r"\{EXERCISE_(\d\d)\}", word)
-            argv.append(str(objects[m.group(1)]) if m else word.replace("{OUTPUT}", str(output)))
-        digest = hashlib.sha256("\0".join(argv).encode())
-        for path in sorted(objects.values()):
-            digest.update(Path(path).read_bytes())
-        cached = self.cache / "bin" / digest.hexdigest()
-        if cached.exists():
-            shutil.copyfile(cached, output)
-            os.chmod(output, 0o755)
-            return None
-        outcome = sandbox.run(runner, argv, cwd=self.build.dir, stdout=log, seconds=120)
-        if outcome.code != 0 or outcome.stopped:
-            text = log.read_bytes()[:1 << 16].decode("utf-8", "replace")
-            first = next((line for line in text.splitlines() if "error" in line or "undefined" in line), "")
-            return (first or outcome.describe())[:300]
-        shutil.copyfile(output, cached)
-        return None
+    def link_all(self, runner, programs, objects, log):
+        """Links programs ({name: output path}) in one start of the sandbox, from the class's
+        build and the student's objects ({chapter: path}); a program the very same objects made
+        for another student is taken from the class's cache. Returns {name: first error or None}."""
+        todo, out, keys = [], {}, {}
+        for program, output in programs.items():
+            digest = hashlib.sha256("\0".join(self.build.link[program]).encode())
+            for ch in sorted(objects):
+                digest.update(ch.encode() + Path(objects[ch]).read_bytes())
+            keys[program] = self.cache / "bin" / digest.hexdigest()
+            if keys[program].exists():
+                shutil.copyfile(keys[program], output)
+                os.chmod(output, 0o755)
+                out[program] = None
+            else:
+                todo.append(program)
+        commands = []
+        for program in todo:
+            argv = []
+            for word in self.build.link[program]:
+                m = re.fullmatch(r"\{EXERCISE_(\d\d)\}", word)
+                argv.append(str(objects[m.group(1)]) if m else word.replace("{OUTPUT}", str(programs[program])))
+            commands.append(argv)
+        for program, (outcome, text) in zip(todo, sandbox.run_batch(runner, commands, cwd=self.build.dir,
+                                                                      seconds_each=120, log=log)):
+            if outcome.code != 0:
+                first = next((line for line in text.splitlines() if "error" in line or "undefined" in line), "")
+                out[program] = (first or outcome.describe())[:300]
+            else:
+                shutil.copyfile(programs[program], keys[program])
+                out[program] = None
+        return out
 
     def grade(self, student, budget=None, report=True):
         """One student: their records, their report files and their gradebook row (or, with
@@ -236,24 +257,23 @@ class Grader:
         setups = {step: self.runner(student, scratch, step) for step in ("compile", "link", "run")}
         setups["compile"].open()
         try:
+            files = {}
             for ch in chapters:
                 if ch in reasons:
                     continue
                 name = self.build.compile[ch]["file"]
                 source = scratch / name
                 shutil.copyfile(sources / name, source)
-                if self.args.sandbox:
-                    os.chown(source, FIRST_UID + student.slot, FIRST_UID + student.slot)
-                obj = scratch / f"ch{ch}.o"
-                error, said = self.compile(setups["compile"], ch, source, obj, mine / f"compile-ch{ch}.log")
+                files[ch] = (source, scratch / f"ch{ch}.o")
+            for ch, (error, said) in self.compile_all(setups["compile"], files, mine / "compile.log").items():
                 if error:
                     reasons[ch] = f"did not compile: {error}"
                     continue
-                bad = symbols.problems(obj, self.reference[ch], self.others)
+                bad = symbols.problems(files[ch][1], self.reference[ch], self.others)
                 if bad:
                     reasons[ch] = "refused before linking: the object " + "; ".join(bad)
                     continue
-                objects[ch], warnings[ch] = obj, said
+                objects[ch], warnings[ch] = files[ch][1], said
             clock["compile"] = time.monotonic() - began - sum(clock.values())
             # Programs of a chapter link the student's exercises up to it; a chapter that
             # failed stands in with the reference's bodies, so later chapters are still graded.
@@ -263,18 +283,18 @@ class Grader:
             bin_dir.mkdir(exist_ok=True)
             if self.args.sandbox:
                 os.chown(bin_dir, FIRST_UID + student.slot, FIRST_UID + student.slot)
+            wanted = {f"{kind}{ch}": bin_dir / f"{kind}{ch}" for ch in chapters if ch not in reasons
+                      for kind in ("test_ch", "ch")}
+            linked = self.link_all(setups["link"], wanted, objects, mine / "link.log")
             programs = {}
             for ch in chapters:
                 if ch in reasons:
                     continue
-                programs[ch] = {}
-                for kind, program in (("test", f"test_ch{ch}"), ("chapter", f"ch{ch}")):
-                    output = bin_dir / program
-                    error = self.link(setups["link"], program, objects, output, mine / f"link-{program}.log")
-                    if error:
-                        reasons[ch] = f"did not link: {error}"
-                        break
-                    programs[ch][kind] = output
+                error = linked[f"test_ch{ch}"] or linked[f"ch{ch}"]
+                if error:
+                    reasons[ch] = f"did not link: {error}"
+                else:
+                    programs[ch] = {"test": wanted[f"test_ch{ch}"], "chapter": wanted[f"ch{ch}"]}
             clock["link"] = time.monotonic() - began - sum(clock.values())
             jobs = []
             for ch in chapters:
@@ -298,6 +318,8 @@ class Grader:
                 (state / "img" / f"ch{ch}").mkdir(parents=True, exist_ok=True)
         finally:
             setups["compile"].close()
+            if getattr(setups["compile"], "cpu", None) is not None:
+                clock["cpu"] = setups["compile"].cpu  # the student's own processes, all of them
         # Where a student's time goes, for bench/class_grade.sh.
         (mine / "seconds.json").write_text(json.dumps({k: round(v, 3) for k, v in clock.items()}) + "\n")
         if not report:
