@@ -154,6 +154,15 @@ read -r f2 t2c _ _ <<<"$(score 02 "$out")"
 check "a forged doctest summary and _Exit(0) score no more than an unfinished 2.2 ($f2 of $t2c)" \
     test "$f2" -le "$h2" -a "$t2c" = "$t2"
 
+# A crash costs the test it happens in, never earns one: the program's listing (and its banner
+# line, which an older grader took for a test's name) is not a pass.
+put22 '    std::raise(SIGSEGV); return false;' '#include <csignal>
+'
+out=$(tools/grade 02 --build build/exercises)
+read -r s2 t2d _ _ <<<"$(score 02 "$out")"
+check "a 2.2 that crashes scores no more than an unfinished one ($s2 of $t2d)" test "$s2" -le "$h2" -a "$t2d" = "$t2"
+check "... and the scorecard names the crash" grep -q 'unit test "2.2 .*crashed' <<<"$out"
+
 # A body that does not compile (a changed contract, say) fails its own chapter with the
 # compiler's first message; the chapters before and after it are still graded.
 put22 '    return sphere_roots_no_such_function(ray, center, radius, t_near, t_far);'

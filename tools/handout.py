@@ -9,8 +9,8 @@ DIR gets what a student uses and no answer in any form they can read as source:
   and tools/reference/aarch64 when Debian's cross compiler is installed), without link-time
   bitcode, -march=native, debug information, source paths or local names, so every chapter
   renders and grades as in the lab (tools/reference.cmake);
-- the library, the chapters' programs and scenes, the released chapters' unit tests and golden
-  images, the grader, the book's sources (its students' edition only) and the pictures of the
+- the library, the chapters' programs and scenes, the released chapters' unit tests, every
+  chapter's golden images, the grader, the book's sources (its students' edition only) and the pictures of the
   lab's steps a handout cannot run (book/supplied/), and a README for students.
 Left out: solutions/, bench/, the fairness, planted and fuzzing tests, the lab's own tests, CI.
 A DIR that is a git checkout keeps its .git: a later handout of more chapters is a new commit
@@ -133,10 +133,11 @@ def main(argv):
     for source in sorted((ROOT / "solutions").glob("ch*.cpp")):
         run([genex, "--blank", source, out / "tools" / "blanks" / source.name])
     run([genex, out / "tools" / "blanks", out / "exercises", "--chapters", " ".join(released)])
-    # The released chapters' tests and golden images only.
+    # The released chapters' unit tests; every chapter's golden images (the book pictures the
+    # scenes of chapters not yet released by them; a picture of a right answer is no answer).
     for ch in released:
         shutil.copy2(ROOT / "tests" / f"test_ch{ch}.cpp", out / "tests")
-        shutil.copytree(ROOT / "tests" / "golden" / f"ch{ch}", out / "tests" / "golden" / f"ch{ch}")
+    shutil.copytree(ROOT / "tests" / "golden", out / "tests" / "golden")
     settings = (out / "tools" / "settings.cmake").read_text()
     settings, n = re.subn(r"set\(RTLAB_RELEASED [^)]*\)", f"set(RTLAB_RELEASED {' '.join(released)})", settings)
     assert n == 1, "tools/settings.cmake has no RTLAB_RELEASED line"
