@@ -23,6 +23,7 @@ from selenium.webdriver.common.by import By
 sys.path.insert(0, str(pathlib.Path(__file__).parent))
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "tools"))
 from checks import check, finish  # noqa: E402
+from explore_client import ball_scene  # noqa: E402
 from chromium import browser, wait_for  # noqa: E402
 
 root, bin_dir, work = (pathlib.Path(a).resolve() for a in sys.argv[1:4])
@@ -122,10 +123,7 @@ try:
 
     # A name that is markup is shown as text, and runs nothing.
     name = '<script>window.rtlabRan = 1</script>"onload="window.rtlabRan = 2"<img src=x onerror="window.rtlabRan = 3">'
-    ball = {"camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "fov": 40}, "shading": "whitted",
-            "lights": [{"type": "point", "position": [2, 3, 4], "color": [1, 1, 1]}],
-            "materials": {"m": {"diffuse": [0.8, 0.3, 0.2]}},
-            "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1.5, "material": "m", "name": name}]}
+    ball = ball_scene(name)
     scripts = driver.execute_script("return document.scripts.length")
     driver.execute_script("document.getElementById('text').value = arguments[0]", json.dumps(ball, indent=1))
     driver.find_element(By.ID, "apply").click()

@@ -6,6 +6,15 @@ import subprocess
 import tempfile
 
 
+def ball_scene(name):
+    """A scene of one ball named `name`, filling the middle of the view, shaded with a ray tree
+    (whitted): a click at the centre picks it, and its side view names it."""
+    return {"camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "fov": 40}, "shading": "whitted",
+            "lights": [{"type": "point", "position": [2, 3, 4], "color": [1, 1, 1]}],
+            "materials": {"m": {"diffuse": [0.8, 0.3, 0.2]}},
+            "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1.5, "material": "m", "name": name}]}
+
+
 class Explorer:
     def __init__(self, program, *args):
         """Starts `program --explore ARGS` and reads the address it prints. Its stderr goes to a

@@ -32,7 +32,7 @@ import xml.etree.ElementTree as ElementTree
 
 sys.path.insert(0, str(pathlib.Path(__file__).parent))
 from checks import check, finish  # noqa: E402
-from explore_client import Explorer  # noqa: E402
+from explore_client import Explorer, ball_scene  # noqa: E402
 
 root, bin_dir, work = (pathlib.Path(a).resolve() for a in sys.argv[1:4])
 work.mkdir(parents=True, exist_ok=True)
@@ -241,10 +241,7 @@ try:
 
     # Names that are markup are text: escaped in the SVG, which runs nothing.
     name = '<script>alert("rtlab")</script>"onload="alert(1)'
-    ball = {"camera": {"eye": [0, 0, 5], "target": [0, 0, 0], "fov": 40}, "shading": "whitted",
-            "lights": [{"type": "point", "position": [2, 3, 4], "color": [1, 1, 1]}],
-            "materials": {"m": {"diffuse": [0.8, 0.3, 0.2]}},
-            "surfaces": [{"type": "sphere", "center": [0, 0, 0], "radius": 1.5, "material": "m", "name": name}]}
+    ball = ball_scene(name)
     check(ask("POST", "/api/scene", json.dumps(ball))[0] == 200, "a surface named with markup is taken")
     status, _, got = ask("GET", "/api/pick?x=32&y=18")
     check(status == 200 and json.loads(got)["surface"] == name, f"the pick names it as it is: {got[:200]!r}")
