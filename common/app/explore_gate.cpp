@@ -12,6 +12,7 @@
 #include <cctype>
 #include <cerrno>
 #include <charconv>
+#include <cstdlib>
 #include <cstring>
 #include <stdexcept>
 
@@ -22,6 +23,8 @@ namespace {
 // The names this server is reached by: the address it listens on, the name browsers give it,
 // and the IPv6 loopback a browser may try first for "localhost".
 constexpr std::array kLoopback{"127.0.0.1", "localhost", "[::1]"};
+// The header the page sends the token in (tools/explore/explore.js).
+constexpr const char* kTokenHeader = "X-Rtlab-Token";
 
 std::string lower(std::string text) {
     std::transform(text.begin(), text.end(), text.begin(), [](unsigned char c) { return char(std::tolower(c)); });
@@ -76,7 +79,7 @@ std::optional<Refusal> ExploreGate::check(const httplib::Request& req, bool page
         if (req.get_header_value_count(key) > 1) return Refusal{400, std::string("more than one ") + key + " header"};
         return std::nullopt;
     };
-    for (const char* key : {"Host", "Origin", "X-Rtlab-Token", "Content-Length"})
+    for (const char* key : {"Host", "Origin", kTokenHeader, "Content-Length"})
         if (auto refused = one(key)) return refused;
 
     // Host: a page whose own name was made to point at 127.0.0.1 sends its name, not ours.
@@ -95,9 +98,9 @@ std::optional<Refusal> ExploreGate::check(const httplib::Request& req, bool page
                                     "): a page of another site may not drive it"};
     }
     if (!page_file && !token_.empty()) {
-        const char* problem = !req.has_header("X-Rtlab-Token")                             ? "no token"
-                              : !same_token(req.get_header_value("X-Rtlab-Token"), token_) ? "wrong token"
-                                                                                           : nullptr;
+        const char* problem = !req.has_header(kTokenHeader)                             ? "no token"
+                              : !same_token(req.get_header_value(kTokenHeader), token_) ? "wrong token"
+                                                                                        : nullptr;
         if (problem)
             return Refusal{403, std::string(problem) + ": open the address the explorer printed (" + origins_.front() +
                                     "/?token=...); its page sends the token with every request"};
@@ -115,7 +118,8 @@ std::optional<Refusal> ExploreGate::check(const httplib::Request& req, bool page
             return Refusal{400, "Content-Length '" + text + "' is not a whole number"};
         if (huge || !limits::contains(limits::scene_file_bytes, double(size)))
             return Refusal{413, "the body is refused before it is read: " +
-                                    limits::refuse(limits::scene_file_bytes, huge ? 1e20 : double(size))};
+                                    limits::refuse(limits::scene_file_bytes,
+                                                   huge ? std::strtod(text.c_str(), nullptr) : double(size))};
     }
     return std::nullopt;
 }
