@@ -74,6 +74,7 @@ def spheres_whitted():
 
 
 def serve(scene, *args):
+    """The server, and the address it prints: the page's, with the session's token."""
     p = subprocess.Popen([str(bin_dir / "ch07"), "--explore", "--scene", str(scene), *SIZE, *args],
                          stdout=subprocess.PIPE, text=True)
     return p, p.stdout.readline().split(" at ")[1].split()[0]
@@ -174,7 +175,7 @@ try:
         server, url = serve(bunny_scene("normal"), "--spp", "4096")
         try:
             for fmt in ("rgba", "rgb", "png", "jpeg"):
-                driver.get(url + f"?format={fmt}")
+                driver.get(url + f"&format={fmt}")  # after ?token=...
                 wait_for(driver, "const f = window.rtlab.frame; return f && f.width === 640")
                 driver.execute_script(RECORD)
                 time.sleep(0.5)

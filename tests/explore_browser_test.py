@@ -6,8 +6,10 @@
 Serves ch07's mirrors, loads the page, waits until the view has converged, clicks a pixel
 with the mouse and checks that the panel shows the numbers `ch07 --pick X,Y` prints and one
 line per ray of its tree, with the SVG side view and the rays drawn in 3D; drags the view and
-checks a new frame comes; applies a broken scene file and checks the loader's line is shown.
-Saves WORK_DIR/explore.png, a screenshot.
+checks a new frame comes; applies a broken scene file and checks the loader's line is shown;
+applies a scene whose surface is named with markup (<script>, "onload=, an <img> whose onerror
+would leave a mark) and checks the page shows the name as text and ran none of it; and opened
+without its token, the page says why it cannot start. Saves WORK_DIR/explore.png, a screenshot.
 """
 import json
 import pathlib
@@ -21,6 +23,7 @@ from selenium.webdriver.common.by import By
 sys.path.insert(0, str(pathlib.Path(__file__).parent))
 sys.path.insert(0, str(pathlib.Path(__file__).resolve().parent.parent / "tools"))
 from checks import check, finish  # noqa: E402
+from explore_client import ball_scene  # noqa: E402
 from chromium import browser, wait_for  # noqa: E402
 
 root, bin_dir, work = (pathlib.Path(a).resolve() for a in sys.argv[1:4])
@@ -38,7 +41,7 @@ def numbers(text):
 
 server = subprocess.Popen([ch07, "--explore", "--scene", str(SCENE), *size, "--spp", "4"],
                           stdout=subprocess.PIPE, text=True)
-url = server.stdout.readline().split(" at ")[1].split()[0]
+url = server.stdout.readline().split(" at ")[1].split()[0]  # with ?token=...
 driver = None
 try:
     driver = browser()
@@ -83,7 +86,7 @@ try:
         .release().perform()
     moved = wait_for(driver, f"return window.rtlab.generation > {generation} && window.rtlab.moveLatencies.length", 60)
     check(moved, "a drag moves the camera and a new frame is shown")
-    camera = driver.execute_script("return fetch('/api/state').then(r => r.json()).then(s => s.camera)")
+    camera = driver.execute_script("return window.rtlab.api('/api/state').then(r => r.json()).then(s => s.camera)")
     check(camera["eye"] != [-1.4, 1.7, 3.4], f"the server's camera moved: {camera['eye']}")
 
     # The controls: an option the parser refuses shows its line; a shading goes into the file.
@@ -118,6 +121,29 @@ try:
     message = wait_for(driver, "return document.getElementById('scene-error').textContent", 30) or ""
     check(message.startswith(str(SCENE) + ":") and "/max_depth: " in message, f"the loader's line is shown: {message!r}")
 
+    # A name that is markup is shown as text, and runs nothing.
+    name = '<script>window.rtlabRan = 1</script>"onload="window.rtlabRan = 2"<img src=x onerror="window.rtlabRan = 3">'
+    ball = ball_scene(name)
+    scripts = driver.execute_script("return document.scripts.length")
+    driver.execute_script("document.getElementById('text').value = arguments[0]", json.dumps(ball, indent=1))
+    driver.find_element(By.ID, "apply").click()
+    check(wait_for(driver, "return document.getElementById('scene-error').textContent === '' && "
+                           "window.rtlab.state.text.includes('rtlabRan')", 30), "the scene with a markup name is taken")
+    driver.execute_script("window.rtlab.pick = null")
+    ActionChains(driver).move_to_element(canvas).click().perform()
+    check(wait_for(driver, "return window.rtlab.pick", 60), "a click on it is answered")
+    shown = driver.execute_script("return document.getElementById('pick-surface').textContent")
+    check(shown == name, f"the name is shown as it is, as text: {shown!r}")
+    check(driver.find_elements(By.CSS_SELECTOR, "#tree li") and name in driver.find_elements(By.CSS_SELECTOR, "#tree li")[0].text,
+          "and in the ray tree's first line")
+    check(wait_for(driver, "const i = document.querySelector('#svg img'); return i && i.complete && i.naturalWidth > 0", 30),
+          "its side view is shown")
+    check(driver.execute_script("return document.scripts.length") == scripts and
+          not driver.find_elements(By.CSS_SELECTOR, "#pick-table *:not(tr, td, tbody), #tree li *, [onload], [onerror]"),
+          "no element was made of the name")
+    time.sleep(0.5)
+    check(driver.execute_script("return window.rtlabRan") is None, "and none of it ran")
+
     time.sleep(0.5)
     driver.save_screenshot(str(work / "explore.png"))
     # (Besides the refusals asked for above: their 400s are logged as failed loads.)
@@ -125,7 +151,13 @@ try:
         return ("/api/scene" in m or "/api/options" in m) and "(Bad Request)" in m
 
     logs = [e["message"] for e in driver.get_log("browser") if e["level"] == "SEVERE" and not asked_for(e["message"])]
-    check(not logs, f"no errors in the browser's console: {logs[:3]}")
+    check(not logs, f"no errors in the browser's console (a script or style the page's policy refused would be one): "
+                    f"{logs[:3]}")
+
+    # Without its token the page cannot start, and says why.
+    driver.get(url.split("?")[0])
+    said = wait_for(driver, "return document.getElementById('error').textContent", 30) or ""
+    check("no token" in said and "open the address the explorer printed" in said, f"without the token: {said!r}")
 finally:
     if driver:
         driver.quit()

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""The explorer's server (common/app/explore_server.cpp), over HTTP with urllib.
+"""The explorer's server (common/app/explore_server.cpp), over HTTP (tests/explore_client.py:
+http.client, with the token the explorer printed; what it refuses is tests/explore_gate_test.py).
 
   explore_endpoints_test.py ROOT BIN_DIR WORK_DIR
 
@@ -18,11 +19,10 @@ import subprocess
 import sys
 import threading
 import time
-import urllib.error
-import urllib.request
 
 sys.path.insert(0, str(pathlib.Path(__file__).parent))
 from checks import check, finish  # noqa: E402
+from explore_client import Explorer  # noqa: E402
 
 root, bin_dir, work = (pathlib.Path(a).resolve() for a in sys.argv[1:4])
 work.mkdir(parents=True, exist_ok=True)
@@ -33,22 +33,9 @@ SCENE = root / "chapters/ch07_specular_reflection/scenes/mirrors.json"
 OPTIONS = json.dumps(["--width", str(W), "--height", str(H), "--spp", "4"])
 
 
-def start(*args):
-    p = subprocess.Popen([ch07, "--explore", "--scene", str(SCENE), "--width", str(W), "--height", str(H),
-                          "--spp", "4", *args], stdout=subprocess.PIPE, stderr=subprocess.PIPE, text=True)
-    line = p.stdout.readline()
-    port = int(line.split("127.0.0.1:")[1].split("/")[0]) if "127.0.0.1:" in line else None
-    return p, port, line
-
-
 def request(path, body=None, method=None, timeout=30):
     """(status, headers, bytes) of one request; never raises for an HTTP error status."""
-    req = urllib.request.Request(base + path, data=body.encode() if isinstance(body, str) else body, method=method)
-    try:
-        with urllib.request.urlopen(req, timeout=timeout) as r:
-            return r.status, r.headers, r.read()
-    except urllib.error.HTTPError as e:
-        return e.code, e.headers, e.read()
+    return server.request(method or ("GET" if body is None else "POST"), path, body, timeout=timeout)
 
 
 def error_of(body):
@@ -73,10 +60,10 @@ def read_pfm(path):
     return w, h, [v for row in rows for v in row]
 
 
-server, port, first_line = start()
-check(port is not None and first_line.startswith("ch07: the explorer is at http://127.0.0.1:"),
-      f"the first line gives the address: {first_line!r}")
-base = f"http://127.0.0.1:{port}"
+server = Explorer(ch07, "--scene", SCENE, "--width", W, "--height", H, "--spp", 4)
+port = server.port
+check(port is not None and server.line.startswith("ch07: the explorer is at http://127.0.0.1:") and
+      len(server.token) == 32, f"the first line gives the address and its token: {server.line!r}")
 try:
     # The page, its script and three.js from libjs-three.
     status, headers, body = request("/")
@@ -270,7 +257,7 @@ try:
           f"72 concurrent requests all answered: {[r for r in results if not r[0]][:5]} of {len(results)}")
     check(elapsed < 60, f"and within a minute ({elapsed:.1f} s)")
     idle.close()
-    check(server.poll() is None, "the server is still running")
+    check(server.process.poll() is None, "the server is still running")
     status, _, _ = request("/api/state")
     check(status == 200, "and answers")
 
@@ -279,11 +266,13 @@ try:
     check(second.returncode == 2 and second.stderr.count("\n") == 1 and f"--port {port}" in second.stderr,
           f"a taken port: exit {second.returncode}, {second.stderr!r}")
 finally:
-    server.terminate()
-    server.wait(30)
+    server.stop()
 
 # Options only the explorer takes.
-for args, words in ((["--port", "8000"], "--port: serves the explorer, so it needs --explore"),
+for args, words in ((["--port", "8000"], "--port: an option of the explorer, so it needs --explore"),
+                    (["--allow", str(work)], "--allow: an option of the explorer, so it needs --explore"),
+                    (["--no-token"], "--no-token: an option of the explorer, so it needs --explore"),
+                    (["--explore", "--allow", str(work / "no-such-folder")], "--allow"),
                     (["--explore", "--pick", "1,1"], "--explore: serves a page"),
                     (["--explore", "--port", "70000"], "--port")):
     r = subprocess.run([ch07, *args], capture_output=True, text=True, timeout=60)

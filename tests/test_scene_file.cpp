@@ -113,6 +113,53 @@ TEST_CASE("OBJ meshes: faces fanned into triangles, bad files rejected in one li
     fs::remove_all(dir);
 }
 
+TEST_CASE("a confined scene names files only under its folders, refused in one line before they are opened") {
+    const fs::path dir = fs::temp_directory_path() / ("rtlab-access-" + std::to_string(::getpid()));
+    fs::remove_all(dir);
+    for (const char* d : {"scenes/sub", "scenes-too", "outside"}) fs::create_directories(dir / d);
+    const char* triangle = "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    std::ofstream(dir / "scenes/tri.obj") << triangle;
+    std::ofstream(dir / "scenes-too/tri.obj") << triangle;  // its folder's name starts like the allowed one
+    std::ofstream(dir / "outside/secret.obj") << "v zz_secret_token 0 0\n";
+    fs::create_symlink("../outside", dir / "scenes/out");         // a link that leads out
+    fs::create_symlink("../tri.obj", dir / "scenes/sub/up.obj");  // a link that stays in
+    const std::string scenes = fs::canonical(dir / "scenes").string();
+    const FileAccess access({scenes}, "--allow DIR adds a folder");
+    const auto load = [&](const std::string& file, const FileAccess& a) -> std::string {
+        const std::string text = R"({"camera": {"eye": [0, 0, 5], "target": [0, 0, 0]}, "surfaces": [)"
+                                 R"({"type": "mesh", "file": ")" +
+                                 file + R"("}]})";
+        try {
+            load_scene_text(text, "posted.json", scenes, nullptr, a);
+        } catch (const SceneError& e) {
+            return e.what();
+        }
+        return "loaded";
+    };
+    for (const std::string& inside : std::vector<std::string>{"tri.obj", "sub/../tri.obj", "sub/up.obj",
+                                                              "sub/missing/../../tri.obj", scenes + "/tri.obj"}) {
+        CAPTURE(inside);
+        CHECK(load(inside, access) == "loaded");
+    }
+    // Absolute, "..", through a link, a neighbour whose name begins the same, a file that is
+    // not there: each the same line, naming the rule and not a byte of the file.
+    for (const std::string& outside :
+         std::vector<std::string>{(dir / "outside/secret.obj").string(), "../outside/secret.obj", "out/secret.obj",
+                                  "sub/../../outside/secret.obj", "../scenes-too/tri.obj", "/etc/passwd",
+                                  "../outside/missing.obj", "tri.obj/../../outside/secret.obj"}) {
+        CAPTURE(outside);
+        CHECK(load(outside, access) == "posted.json:1:83: /surfaces/0/file: '" + outside +
+                                           "' is refused: this scene may only name files under " + scenes +
+                                           " (--allow DIR adds a folder)");
+    }
+    // Another folder allowed; a scene file from the command line may name any file, and the
+    // OBJ reader's line quotes the file, as it always has.
+    CHECK(load("../outside/secret.obj", FileAccess({scenes, (dir / "outside").string()}, "")).find("zz_secret_token") !=
+          std::string::npos);
+    CHECK(load("../outside/secret.obj", FileAccess{}).find("zz_secret_token") != std::string::npos);
+    fs::remove_all(dir);
+}
+
 TEST_CASE("the book's scene-format examples load, and the schema is valid JSON") {
     // Appendix A's ```json blocks are complete scenes: the documentation cannot drift from
     // the loader without this failing.

@@ -13,7 +13,9 @@
 #include <nlohmann/json.hpp>
 
 #include <unistd.h>
+#include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <iostream>
 
 namespace rt {
@@ -167,6 +169,13 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
         ->check(whole)
         ->check(CLI::Range(0, 65535))
         ->capture_default_str();
+    cli.add_option("--allow", inv.allow,
+                   "with --explore: a folder whose files a scene sent by the page may name, besides the chapter's "
+                   "scenes and ../shared/assets (again for another)")
+        ->check(CLI::ExistingDirectory)
+        ->allow_extra_args(false);
+    cli.add_flag("--no-token", inv.no_token,
+                 "with --explore: ask no token, so that any program on this machine may drive it (for tests only)");
     cli.set_version_flag("--version", std::string(id_ + " (rtlab " + build_info::version + ", Real=" + real_name() +
                                                   ", " + build_info::track + " track, exercises from solutions/: " +
                                                   build_info::from_solutions + ")"));
@@ -204,7 +213,9 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
         return usage("--scene: unknown scene '" + scene_name + "' (see --list-scenes, or give a FILE.json)");
     }
     inv.spp_given = cli.count("--spp") > 0;
-    if (cli.count("--port") && !inv.explore) return usage("--port: serves the explorer, so it needs --explore");
+    for (const char* option : {"--port", "--allow", "--no-token"})
+        if (cli.count(option) && !inv.explore)
+            return usage(std::string(option) + ": an option of the explorer, so it needs --explore");
     if (inv.explore) {  // the explorer's own default size: 16:9, quick enough to move
         if (!cli.count("--width")) o.width = 640;
         if (!cli.count("--height")) o.height = 360;
@@ -227,6 +238,16 @@ std::optional<int> ChapterApp::parse(int argc, const char* const* argv, Invocati
         return usage(e.what());
     }
     return std::nullopt;
+}
+
+std::vector<std::string> ChapterApp::scene_folders() const {
+    std::vector<std::string> folders;
+    for (const SceneEntry& s : scenes_) {
+        const std::string folder = std::filesystem::path(s.file).parent_path().string();
+        if (!s.file.empty() && std::find(folders.begin(), folders.end(), folder) == folders.end())
+            folders.push_back(folder);
+    }
+    return folders;
 }
 
 int ChapterApp::execute(const Invocation& inv) const {

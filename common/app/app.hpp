@@ -58,6 +58,10 @@ public:
         bool stats = false;
         bool explore = false;  // --explore: serve the explorer (common/app/explore.hpp) instead
         int port = 0;          // --port: its port on 127.0.0.1 (0: any free one)
+        // --allow DIR: folders whose files a scene sent by the explorer's page may name,
+        // besides scene_folders() and the lab's shared assets (book §0.11).
+        std::vector<std::string> allow;
+        bool no_token = false;  // --no-token: the explorer asks no token (for tests only)
     };
     // Parses and checks a command line without touching any file: the exit code to end with
     // (--help, --version, --list-scenes, or 2 after one line on stderr), or nothing when
@@ -71,6 +75,8 @@ public:
     const std::string& id() const { return id_; }
     const std::string& title() const { return title_; }
     const std::vector<SceneEntry>& scenes() const { return scenes_; }
+    // The folders of the chapter's own scene files (chapters/chNN_*/scenes/), once each.
+    std::vector<std::string> scene_folders() const;
 
 private:
     std::string id_;

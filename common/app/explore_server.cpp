@@ -1,15 +1,18 @@
 #include "app/explore.hpp"
 
+#include "app/explore_gate.hpp"
 #include "app/explore_session.hpp"
 #include "core/text.hpp"
 
 #include <httplib.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <charconv>
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <semaphore>
 #include <sstream>
 
 namespace rt {
@@ -19,11 +22,41 @@ namespace {
 using nlohmann::json;
 using Clock = std::chrono::steady_clock;
 
+// What the page may do, said to the browser (Content-Security-Policy): run scripts of this
+// server only (none written into the page, none of another site), show images of this server
+// and those it makes itself (the ray tree's SVG, fetched with the token), talk to this server
+// only, and be shown in no other site's frame.
+constexpr const char* kPagePolicy =
+    "default-src 'none'; script-src 'self'; style-src 'self'; img-src 'self' blob:; connect-src 'self'; "
+    "base-uri 'none'; form-action 'none'; frame-ancestors 'none'";
+// Everything else (JSON, the SVG, errors), should a browser be sent to it: nothing runs.
+constexpr const char* kDataPolicy = "default-src 'none'; frame-ancestors 'none'; sandbox";
+
+// httplib's pool queues every connection it accepts, without end. This one holds at most
+// `workers` at work and as many waiting: past that, the accepting thread waits for a place,
+// and new connections wait in the kernel's listen queue, costing the process nothing.
+class BoundedPool final : public httplib::TaskQueue {
+public:
+    explicit BoundedPool(std::size_t workers) : places_(std::ptrdiff_t(2 * workers)), pool_(workers) {}
+    void enqueue(std::function<void()> fn) override {
+        places_.acquire();
+        pool_.enqueue([this, fn = std::move(fn)] {
+            fn();
+            places_.release();
+        });
+    }
+    void shutdown() override { pool_.shutdown(); }
+
+private:
+    std::counting_semaphore<> places_;
+    httplib::ThreadPool pool_;
+};
+
 // The page's own files (tools/explore/) and three.js from Debian's libjs-three: served as
 // they are, with no build step.
 struct StaticFile {
     const char* url;
-    std::string path;
+    std::string path;  // empty: nothing to send (204)
     const char* type;
 };
 
@@ -88,8 +121,12 @@ int explore(const ChapterApp& app, const ChapterApp::Invocation& inv) {
     ExploreSession& s = *session;
 
     httplib::Server server;
-    // Long-polled frames each hold a worker: enough of them for a few tabs' connections.
-    server.new_task_queue = [] { return new httplib::ThreadPool(24); };
+    // Long-polled frames each hold a worker: enough of them for a few tabs' connections, and
+    // no more at once (BoundedPool).
+    server.new_task_queue = [] { return new BoundedPool(24); };
+    // One request a connection: a request refused before its body was read leaves that body
+    // unread, and the connection must close rather than read it as the next request.
+    server.set_keep_alive_max_count(1);
     server.set_keep_alive_timeout(2);
     // Not httplib's default SO_REUSEPORT: a second explorer on a taken port is refused, not
     // given half the connections.
@@ -101,18 +138,46 @@ int explore(const ChapterApp& app, const ChapterApp::Invocation& inv) {
     server.set_payload_max_length(std::size_t(limits::scene_file_bytes.max));
 
     const std::string page = RTLAB_EXPLORE_DIR;
-    for (const StaticFile& f : {StaticFile{"/", page + "/index.html", "text/html; charset=utf-8"},
-                                StaticFile{"/explore.js", page + "/explore.js", "text/javascript"},
-                                StaticFile{"/explore.css", page + "/explore.css", "text/css"},
-                                StaticFile{"/three.min.js", RTLAB_THREE_JS, "text/javascript"}})
+    const std::vector<StaticFile> files{{"/", page + "/index.html", "text/html; charset=utf-8"},
+                                        {"/explore.js", page + "/explore.js", "text/javascript"},
+                                        {"/explore.css", page + "/explore.css", "text/css"},
+                                        {"/three.min.js", RTLAB_THREE_JS, "text/javascript"},
+                                        {"/favicon.ico", "", ""}};
+    for (const StaticFile& f : files)
         server.Get(f.url, [f](const httplib::Request&, httplib::Response& res) {
+            if (f.path.empty()) return void(res.status = 204);
             const std::string text = read_whole(f.path);
             if (text.empty()) return fail(res, 500, "cannot read " + f.path);
             res.set_header("Cache-Control", "no-cache");
+            res.set_header("Content-Security-Policy", kPagePolicy);
             res.set_content(text, f.type);
         });
 
-    server.Get("/favicon.ico", [](const httplib::Request&, httplib::Response& res) { res.status = 204; });
+    // Every request passes the gate (explore_gate.hpp) before anything else is done with it,
+    // its body unread; the page's files need no token.
+    std::optional<ExploreGate> gate;  // once the port is known
+    const auto refused = [&](const httplib::Request& req, httplib::Response& res) {
+        const bool page_file =
+            std::any_of(files.begin(), files.end(), [&](const StaticFile& f) { return req.path == f.url; });
+        const auto refusal = gate->check(req, page_file);
+        if (refusal) fail(res, refusal->status, refusal->reason);
+        return refusal.has_value();
+    };
+    server.set_pre_routing_handler([&](const httplib::Request& req, httplib::Response& res) {
+        return refused(req, res) ? httplib::Server::HandlerResponse::Handled
+                                 : httplib::Server::HandlerResponse::Unhandled;
+    });
+    // A client that waits for leave to send its body (curl's Expect: 100-continue) is refused
+    // before it sends it.
+    server.set_expect_100_continue_handler(
+        [&](const httplib::Request& req, httplib::Response& res) { return refused(req, res) ? res.status : 100; });
+    server.set_post_routing_handler([](const httplib::Request&, httplib::Response& res) {
+        if (!res.has_header("Content-Security-Policy")) res.set_header("Content-Security-Policy", kDataPolicy);
+        res.set_header("X-Content-Type-Options", "nosniff");  // a JSON error is never read as a page
+        res.set_header("Referrer-Policy", "no-referrer");     // the page's address holds the token
+        if (!res.has_header("Cache-Control")) res.set_header("Cache-Control", "no-store");  // a pick's answer changes
+    });
+
     server.Get("/api/state", [&](const httplib::Request&, httplib::Response& res) {
         res.set_content(s.state().dump(-1, ' ', false, json::error_handler_t::replace), "application/json");
     });
@@ -129,7 +194,6 @@ int explore(const ChapterApp& app, const ChapterApp::Invocation& inv) {
             return fail(res, 400, "parameter 'format' must be rgb, rgba, png or jpeg, not '" + name + "'");
         const auto frame = s.frame_after(std::uint64_t(*after), std::chrono::milliseconds(*wait));
         const std::string error = s.render_error();
-        res.set_header("Access-Control-Expose-Headers", "*");
         if (!error.empty()) res.set_header("X-Render-Error", error);
         if (!frame) {
             res.status = 204;
@@ -202,15 +266,26 @@ int explore(const ChapterApp& app, const ChapterApp::Invocation& inv) {
         }
     });
 
-    // Loopback only: the explorer runs the student's code on whatever a page posts.
+    // Loopback only, and the gate: the explorer runs the student's code on whatever a page posts.
     const int port = inv.port == 0 ? server.bind_to_any_port("127.0.0.1")
                                    : (server.bind_to_port("127.0.0.1", inv.port) ? inv.port : -1);
     if (port <= 0) {
         std::fprintf(stderr, "%s: error: --port %d: cannot listen on 127.0.0.1 (in use?)\n", id, inv.port);
         return 2;
     }
-    std::printf("%s: the explorer is at http://127.0.0.1:%d/ (Ctrl-C ends it)\n", id, port);
+    std::string token;
+    try {
+        token = inv.no_token ? "" : new_explore_token();
+    } catch (const std::exception& e) {
+        std::fprintf(stderr, "%s: error: %s\n", id, one_line(e.what()).c_str());
+        return 2;
+    }
+    gate.emplace(port, token);
+    std::printf("%s: the explorer is at %s (Ctrl-C ends it)\n", id, gate->address().c_str());
     std::fflush(stdout);
+    if (inv.no_token)
+        std::fprintf(stderr, "%s: --no-token: any program on this machine may drive this explorer (for tests only)\n",
+                     id);
     server.listen_after_bind();
     return 0;
 }

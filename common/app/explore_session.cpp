@@ -59,6 +59,10 @@ json names_json(const Names& names) {
 }  // namespace
 
 ExploreSession::ExploreSession(const ChapterApp& app, const ChapterApp::Invocation& inv) : app_(app) {
+    std::vector<std::string> folders = app.scene_folders();
+    folders.push_back(RTLAB_SHARED_ASSETS);
+    folders.insert(folders.end(), inv.allow.begin(), inv.allow.end());
+    page_files_ = FileAccess(folders, "--allow DIR on the explorer's command line adds a folder");
     invocation_ = render_invocation_ = inv;
     SceneSummary summary;
     Scene scene = inv.scene.build(summary);
@@ -167,7 +171,7 @@ std::string ExploreSession::set_scene_text(const std::string& text) {
     }
     auto scene = std::make_shared<Scene>();
     try {
-        *scene = load_scene_text(text, filename, base_dir_);
+        *scene = load_scene_text(text, filename, base_dir_, nullptr, page_files_);
         scene->name = scene_name_;
         (void)options_for(*scene, inv);
     } catch (const std::exception& e) {  // SceneError, or a limit (std::invalid_argument)
@@ -211,6 +215,10 @@ std::string ExploreSession::set_options(const std::vector<std::string>& args) {
     for (const std::string& a : args) argv.push_back(a.c_str());
     ChapterApp::Invocation inv;
     std::string message;
+    // Refused before they are parsed: --allow's check would tell whether a folder exists.
+    for (const std::string& a : args)
+        if (a.starts_with("--allow") || a.starts_with("--no-token"))
+            return a.substr(0, a.find('=')) + ": is the command line's: the page cannot widen what it may do";
     if (app_.parse(int(argv.size()), argv.data(), inv, &message)) return message.empty() ? "not an option" : message;
     std::lock_guard lock(mutex_);
     Scene facts;

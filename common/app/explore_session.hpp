@@ -9,6 +9,7 @@
 // frame's interval is its pass, not the pass and the finishing added.
 #include "app/app.hpp"
 #include "app/explore_frame.hpp"
+#include "io/file_access.hpp"
 
 #include <nlohmann/json.hpp>
 
@@ -39,9 +40,11 @@ public:
 
     // Each returns "" once the change is taken, else the one line that refuses it (the
     // loader's FILE:LINE:COL: /pointer: message, or the command line's), changing nothing.
+    // A scene sent by the page names files only under page_files() (book §0.11).
     std::string set_scene_text(const std::string& text);
     std::string set_camera_text(const std::string& text);
-    // Command-line options (--spp 4 --accel bvh-sah ...), read by the chapter's own parser.
+    // Command-line options (--spp 4 --accel bvh-sah ...), read by the chapter's own parser;
+    // not --allow or --no-token, which only the person gives, on the command line.
     std::string set_options(const std::vector<std::string>& args);
 
     // The newest frame once it is newer than `after`, or the newest there is after `wait`
@@ -80,6 +83,9 @@ private:
 
     const ChapterApp& app_;
     std::string scene_name_, scene_file_, scene_text_, base_dir_;
+    // The files a scene from the page may name: the chapter's scene folders, the lab's shared
+    // assets and --allow's folders.
+    FileAccess page_files_;
 
     mutable std::mutex mutex_;
     mutable std::condition_variable changed_;  // the render thread waits on it

@@ -4,6 +4,8 @@
 // its value, and to the "a, b or c" a message lists. The table's length is checked against
 // the enum at compile time, so an enumerator added without a name does not compile (and
 // cannot index past the end of the table at run time).
+#include "core/text.hpp"
+
 #include <array>
 #include <cstddef>
 #include <optional>
@@ -73,11 +75,7 @@ public:
     // Every name, for a command-line check (CLI::IsMember).
     std::vector<std::string> all() const { return {names_.begin(), names_.end()}; }
     // "a, b or c": what a message says it expected.
-    std::string list() const {
-        std::string out;
-        for (std::size_t k = 0; k < N; ++k) out += std::string(k == 0 ? "" : k + 1 == N ? " or " : ", ") + names_[k];
-        return out;
-    }
+    std::string list() const { return or_list(names_); }
     static constexpr std::size_t size() { return N; }
 
 private:

@@ -2,6 +2,9 @@
 // Messages are one line: a value quoted from an input (a JSON string with "\n" in it, the
 // four bytes of an unknown PNG chunk) must not break that promise, or print bytes a
 // terminal would interpret.
+#include <cstddef>
+#include <functional>
+#include <iterator>
 #include <string>
 #include <string_view>
 
@@ -28,6 +31,20 @@ inline std::string one_line(std::string_view text) {
         }
     }
     return r;
+}
+
+// "a", "a or b", "a, b or c": the choices a message lists, each item as `say` gives it.
+template <class Range, class Say = std::identity>
+std::string or_list(const Range& items, Say say = {}) {
+    std::string out;
+    const std::size_t n = std::size(items);
+    std::size_t k = 0;
+    for (const auto& item : items) {
+        out += k == 0 ? "" : k + 1 == n ? " or " : ", ";
+        out += say(item);
+        ++k;
+    }
+    return out;
 }
 
 }  // namespace rt

@@ -9,14 +9,13 @@
 #include <cstdio>
 #include <cstdlib>
 #include <exception>
-#include <filesystem>
 
 namespace rt {
 
 using nlohmann::json;
 
-JsonReader::JsonReader(const std::string& text, std::string filename, std::string base_dir)
-    : text_(text), filename_(std::move(filename)), base_dir_(std::move(base_dir)) {}
+JsonReader::JsonReader(const std::string& text, std::string filename, std::string base_dir, FileAccess access)
+    : text_(text), filename_(std::move(filename)), base_dir_(std::move(base_dir)), access_(std::move(access)) {}
 
 void JsonReader::fail(const std::string& pointer, const std::string& message) const {
     TextPosition p;
@@ -216,9 +215,12 @@ std::vector<std::pair<std::string, Fields>> Fields::named_objects(const char* ke
 }
 
 std::string Fields::file(const char* key) const {
-    std::filesystem::path path = text(key);
-    if (path.is_relative()) path = std::filesystem::path(reader_.base_dir()) / path;
-    return path.string();
+    const std::string name = text(key);
+    try {
+        return reader_.access().resolve(name, reader_.base_dir());
+    } catch (const std::runtime_error& e) {
+        fail(key, e.what());
+    }
 }
 
 }  // namespace rt

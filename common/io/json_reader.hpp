@@ -5,6 +5,7 @@
 #include "core/names.hpp"
 #include "core/real.hpp"
 #include "geometry/limits.hpp"
+#include "io/file_access.hpp"
 #include "io/json_locations.hpp"
 
 #include <nlohmann/json_fwd.hpp>
@@ -22,20 +23,23 @@ struct SceneError : std::runtime_error {
     using std::runtime_error::runtime_error;
 };
 
-// The whole document: where each value is, and the file's name and directory.
+// The whole document: where each value is, the file's name and directory, and which files
+// it may name.
 class JsonReader {
 public:
-    JsonReader(const std::string& text, std::string filename, std::string base_dir);
+    JsonReader(const std::string& text, std::string filename, std::string base_dir, FileAccess access = {});
 
     // Throws SceneError at the nearest enclosing value that has a position (a missing key
     // has none).
     [[noreturn]] void fail(const std::string& pointer, const std::string& message) const;
     const std::string& base_dir() const { return base_dir_; }
+    const FileAccess& access() const { return access_; }
 
 private:
     std::string text_;  // positions are looked up in it only when something fails
     std::string filename_;
     std::string base_dir_;
+    FileAccess access_;
 };
 
 // One JSON object of the scene file, read key by key. A getter without a fallback requires
@@ -100,7 +104,9 @@ public:
     // An object whose keys are names the file chooses (/materials, /shapes): each value read
     // as Fields of its own, with its name.
     std::vector<std::pair<std::string, Fields>> named_objects(const char* key) const;
-    // A file name, relative to the scene file's directory unless absolute.
+    // A file name, relative to the scene file's directory unless absolute: the path to open.
+    // Fails at the key, before the file is opened, for a file the scene may not name
+    // (FileAccess).
     std::string file(const char* key) const;
 
     // Fails at `key` (or at the object itself for an empty key).

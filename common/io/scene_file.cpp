@@ -241,9 +241,9 @@ Camera load_camera_text(const std::string& text, const std::string& filename) {
 }
 
 Scene load_scene_text(const std::string& text, const std::string& filename, const std::string& base_dir,
-                      SceneSummary* summary_out) {
+                      SceneSummary* summary_out, const FileAccess& access) {
     const json doc = parse(text, filename);
-    const JsonReader reader(text, filename, base_dir);
+    const JsonReader reader(text, filename, base_dir, access);
     const Fields top(reader, doc, "");
     SceneSummary summary;
     summary.from_file = true;

@@ -1,5 +1,6 @@
 #pragma once
 // JSON scene files (book appendix A). Every chapter executable takes one as --scene FILE.json.
+#include "io/file_access.hpp"
 #include "io/json_reader.hpp"
 #include "render/scene.hpp"
 
@@ -25,10 +26,12 @@ struct SceneSummary {
     std::uint64_t shared_bytes = 0;
 };
 
-// Throws SceneError. Relative mesh paths are relative to the scene file's directory.
+// Throws SceneError. Relative mesh paths are relative to the scene file's directory. A scene
+// file may name any file; a scene's text, only the files `access` lets it (the explorer's
+// scenes sent over HTTP).
 Scene load_scene_file(const std::string& path, SceneSummary* summary = nullptr);
 Scene load_scene_text(const std::string& text, const std::string& filename, const std::string& base_dir,
-                      SceneSummary* summary = nullptr);
+                      SceneSummary* summary = nullptr, const FileAccess& access = {});
 // A scene file's "camera" object on its own (the explorer's camera moves), read as the
 // loader reads it. Throws SceneError.
 Camera load_camera_text(const std::string& text, const std::string& filename);

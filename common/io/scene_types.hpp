@@ -8,6 +8,7 @@
 // the static library unreferenced, and the linker would leave it out of every program. Here
 // a type the schema lists without a module fails to link, and tests/schema_test.py fails on
 // a module whose type the schema does not list.
+#include "core/text.hpp"
 #include "geometry/shape.hpp"
 #include "io/json_reader.hpp"
 #include "shading/light.hpp"
@@ -48,10 +49,7 @@ const std::vector<const LightType*>& light_types();
 // "a, b or c": the names of a table, for messages.
 template <class T>
 std::string type_names(const std::vector<const T*>& types) {
-    std::string list;
-    for (std::size_t i = 0; i < types.size(); ++i)
-        list += std::string(i == 0 ? "" : i + 1 == types.size() ? " or " : ", ") + types[i]->name;
-    return list;
+    return or_list(types, [](const T* t) { return t->name; });
 }
 
 // Materials have one kind so far (io/types/phong_material.cpp).

@@ -6,10 +6,14 @@
 const $ = (id) => document.getElementById(id);
 const params = new URLSearchParams(location.search);
 const format = params.get('format') || 'rgb';  // how frames travel: rgb (chosen, see the book), rgba, png, jpeg
+// The session's token, from the address the explorer printed: sent with every request as a
+// header, never in a URL (book §0.11 says why). Without it the server refuses, and says so.
+const token = params.get('token') ?? '';
+const api = (url, options = {}) => fetch(url, {...options, headers: {...options.headers, 'X-Rtlab-Token': token}});
 
 // What the tests and ./lab bench explore read (tests/explore_browser_test.py, bench/explore_bench.py).
 const rtlab = window.rtlab = {
-  format, framesDrawn: 0, frame: null, generation: 0, moveLatencies: [], clickLatencies: [],
+  api, format, framesDrawn: 0, frame: null, generation: 0, moveLatencies: [], clickLatencies: [],
   pick: null, pickDrawnAt: 0, state: null, errors: [],
 };
 
@@ -32,7 +36,7 @@ const rotate = (v, k, a) => add(add(mul(v, Math.cos(a)), mul(cross(k, v), Math.s
   mul(k, dot(k, v) * (1 - Math.cos(a))));
 
 async function getJson(url, options) {
-  const r = await fetch(url, options);
+  const r = await api(url, options);
   const j = await r.json();
   if (!r.ok) throw new Error(j.error || `HTTP ${r.status}`);
   return j;
@@ -85,7 +89,7 @@ async function drawFrame(buffer, w, h) {
 // (fetch, read, draw, fetch again would leave the server's new frame waiting for the page).
 function ask(after) {
   const asked = performance.now();
-  return fetch(`/api/frame?after=${after}&format=${format}&wait=1000`)
+  return api(`/api/frame?after=${after}&format=${format}&wait=1000`)
     .then((r) => ({r, asked}), (error) => ({error, asked}));
 }
 
@@ -362,7 +366,7 @@ $('clear').addEventListener('click', () => { tree = null; drawRays(); });
 // ---- state: the chapter, scene, options and choices ----
 function fillSelect(id, names, value, empty) {
   const el = $(id);
-  el.innerHTML = '';
+  el.replaceChildren();
   if (empty) el.append(new Option(empty, ''));
   for (const n of names) el.append(new Option(n, n));
   el.value = value ?? '';
@@ -425,7 +429,7 @@ function showPick(p) {
   }
   rows.push(['colour', p.color]);
   const table = $('pick-table');
-  table.innerHTML = '';
+  table.replaceChildren();
   for (const [k, v] of rows) {
     const tr = table.insertRow();
     tr.insertCell().textContent = k;
@@ -440,7 +444,7 @@ function showPick(p) {
   };
   if (p.tree) walk(p.tree, 0);
   const list = $('tree');
-  list.innerHTML = '';
+  list.replaceChildren();
   tree.forEach((n, i) => {
     const li = document.createElement('li');
     li.textContent = `${'  '.repeat(n.level)}${n.kind}${n.hit ? ` → ${n.hit.surface} t=${n.hit.t}` : ''}` +
@@ -451,10 +455,29 @@ function showPick(p) {
     list.append(li);
   });
   // The side view (--svg) as an image: drawn once, not again with every frame; fetched after
-  // the numbers and the 3D rays, which do not wait for it.
-  $('svg').innerHTML = p.tree
-    ? `<img alt="the ray tree seen from the side" src="/api/tree.svg?x=${p.pixel[0]}&y=${p.pixel[1]}&g=${rtlab.generation}">`
-    : '<p class="hint">This scene\'s shading records no ray tree (use whitted).</p>';
+  // the numbers and the 3D rays, which do not wait for it. Fetched with the token and shown
+  // from memory (a blob: address); as an image, nothing in it could run.
+  const box = $('svg');
+  box.replaceChildren();
+  if (p.tree) showSvg(box, `/api/tree.svg?x=${p.pixel[0]}&y=${p.pixel[1]}`);
+  else box.append(Object.assign(document.createElement('p'), {className: 'hint',
+    textContent: 'This scene\'s shading records no ray tree (use whitted).'}));
+}
+
+let svgUrl = null, svgAsked = 0;
+async function showSvg(box, url) {
+  const asked = ++svgAsked;
+  try {
+    const r = await api(url);
+    if (!r.ok) throw new Error((await r.json()).error);
+    const blob = await r.blob();
+    if (asked !== svgAsked) return;  // another pixel was clicked meanwhile
+    if (svgUrl) URL.revokeObjectURL(svgUrl);
+    svgUrl = URL.createObjectURL(blob);
+    box.replaceChildren(Object.assign(document.createElement('img'), {alt: 'the ray tree seen from the side', src: svgUrl}));
+  } catch (e) {
+    $('error').textContent = `side view: ${e.message}`;
+  }
 }
 
 function describe(n) {

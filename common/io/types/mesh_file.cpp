@@ -8,9 +8,10 @@ namespace rt {
 namespace {
 
 Shape read_mesh_file(const Fields& f) {
+    const std::string path = f.file("file");  // refused here if the scene may not name it
     MeshData data;
     try {
-        data = load_obj(f.file("file"));
+        data = load_obj(path);
     } catch (const std::runtime_error& e) {
         f.fail("file", e.what());
     }
