@@ -55,13 +55,18 @@ std::vector<std::string> read_lines(const fs::path& p, bool& ok) {
     return lines;
 }
 
+// A students' handout (tools/handout.py) has tools/blanks/ in place of solutions/.
+bool is_handout(const fs::path& root) {
+    return fs::is_directory(root / "tools" / "blanks") && !fs::exists(root / "solutions");
+}
+
 // The excerpt, or an error message.
 bool excerpt(const fs::path& root, const std::string& file, const std::string& name, bool student, std::string& out) {
     bool ok = false;
     // A students' handout has no solutions/: tools/blanks/ holds the same files with every body
     // a stub (tools/handout.py), which the student edition shows the same way.
     fs::path path = root / file;
-    if (file.rfind("solutions/", 0) == 0 && !fs::exists(root / "solutions"))
+    if (file.rfind("solutions/", 0) == 0 && is_handout(root))
         path = root / "tools" / "blanks" / file.substr(std::string("solutions/").size());
     const auto lines = read_lines(path, ok);
     if (!ok) {
@@ -270,7 +275,7 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    if (!student && !fs::exists(root / "solutions")) {
+    if (!student && is_handout(root)) {
         std::cerr << "rtlab-book: this is a students' handout: it has the students' edition only\n";
         return 2;
     }
