@@ -21,10 +21,12 @@ for the file's helper region), and "// @body" followed by the body.
 
 To keep it quick, variants share rounds: one grade per round, on the round's chapters only.
 A wrong body in chapter c also reaches the programs of later chapters (they link the
-student's exercises up to theirs), so a round holds at most one fail variant, and only pass
-variants of earlier chapters beside it. Fail variants are graded on their unit tests only
-(tools/grade --units) unless they say "// images". Rounds run in as many lanes as
-there are cores, each on a copy of its own.
+student's exercises up to theirs), so a round holds at most one fail variant of a chapter,
+and only pass variants of earlier chapters beside it. Pass variants of different exercises
+of one chapter share its file in a round (correct answers together are still correct);
+should that chapter miss full marks, each of them is graded again alone, to say which.
+Fail variants are graded on their unit tests only (tools/grade --units) unless they say
+"// images". Rounds run in as many lanes as there are cores, each on a copy of its own.
 """
 import os
 import re
@@ -93,8 +95,9 @@ def put(text, opener, body):
     return text[:a] + body + text[b:]
 
 
-def exercise_file(root, work, chapter, variant):
-    """The chapter's exercise file with the reference's bodies and the variant's one."""
+def exercise_file(root, work, chapter, variants=()):
+    """The chapter's exercise file with the reference's bodies and the variants' ones (of
+    different exercises), their helper lines one after another."""
     solution = next((root / "solutions").glob(f"ch{chapter}_*.cpp"))
     target = work / "exercises" / solution.name
     stub = target.read_text()
@@ -103,15 +106,18 @@ def exercise_file(root, work, chapter, variant):
         number = m[1]
         a, b = region(reference, r"// @exercise " + re.escape(number) + r" \|")
         stub = put(stub, r"// @exercise " + re.escape(number) + r" \|", reference[a:b])
-    if variant:
+    helpers = ""
+    for variant in variants:
         stub = put(stub, r"// @exercise " + re.escape(variant.exercise) + r" \|", variant.body)
-        if variant.helpers:
-            stub = put(stub, r"// @helpers", variant.helpers)
+        helpers += variant.helpers
+    if helpers:
+        stub = put(stub, r"// @helpers", helpers)
     target.write_text(stub)
 
 
 def rounds(variants):
-    """Rounds of variants, at most one per chapter each, as the module doc says."""
+    """Rounds of variants, as the module doc says: at most one fail variant of a chapter each,
+    and pass variants of one chapter only beside others of different exercises."""
     fails = sorted((v for v in variants if v.verdict == "fail"), key=lambda v: (v.chapter, v.name))
     passes = sorted((v for v in variants if v.verdict == "pass"), key=lambda v: (v.chapter, v.name))
     out = []
@@ -127,17 +133,18 @@ def rounds(variants):
             out.append([f])
         else:
             group.append(f)
-    # Correct ones go where no wrong body of an earlier chapter reaches them.
+    # Correct ones go where no wrong body of their chapter or an earlier one reaches them, one
+    # per exercise.
     for group in out:
         lowest = min(g.chapter for g in group)
         for p in list(passes):
-            if p.chapter < lowest and all(p.chapter != g.chapter for g in group):
+            if p.chapter < lowest and all(p.exercise != g.exercise for g in group):
                 group.append(p)
                 passes.remove(p)
     while passes:
         group = []
         for p in list(passes):
-            if all(p.chapter != g.chapter for g in group):
+            if all(p.exercise != g.exercise for g in group):
                 group.append(p)
                 passes.remove(p)
         out.append(group)
@@ -179,16 +186,16 @@ def main():
         # one configuration serves every round (no --solved to change), and a round
         # recompiles only the files of its variants.
         for c in chapters:
-            exercise_file(root, copy, c, None)
+            exercise_file(root, copy, c)
         copies.append((copy, {p.name: p.read_text() for p in (copy / "exercises").glob("*.cpp")}))
 
     def grade(lane, group):
         copy, pristine = copies[lane]
         for name, text in pristine.items():
             (copy / "exercises" / name).write_text(text)
-        for v in group:
-            exercise_file(root, copy, v.chapter, v)
         mine = sorted({v.chapter for v in group})
+        for c in mine:
+            exercise_file(root, copy, c, [v for v in group if v.chapter == c])
         units = all(not v.images for v in group)
         command = ["tools/grade", *mine, "--build", "build/exercises", "--solved", ""] + (["--units"] if units else [])
         start = time.monotonic()
@@ -206,8 +213,9 @@ def main():
         return results
 
     def judge(v, group, out):
-        """The checks of one variant, or None when another wrong body of its round hides
-        whether its own failure is named (then it is graded again, alone)."""
+        """The checks of one variant, or None when another body of its round hides what its
+        own did (another wrong body, whether its failure is named; another correct one of its
+        chapter, which of them cost the full marks): then it is graded again, alone."""
         s = score(out, v.chapter)
         if s is None:
             return [(False, f"{v.name}: no scorecard row for ch{v.chapter}:\n{out}")], ""
@@ -222,6 +230,8 @@ def main():
         unreadable = [l for l in lines if "{?}" in l or re.search(r"\b0x[0-9a-f]{6,}\b", l)]
         checks.append((not unreadable, f"{v.name}: a failure line prints no value:\n" + "\n".join(unreadable)))
         if v.verdict == "pass":
+            if not full and any(w is not v and w.chapter == v.chapter for w in group):
+                return None, row
             checks.append((full, f"{v.name} (a correct answer: {v.why}) did not get full marks: {row}\n" +
                            "\n".join(lines)))
             return checks, row
@@ -259,7 +269,8 @@ def main():
                 checks, row = judge(v, group, out)
                 if checks is None:
                     again.append([v])
-                    print(f"   {v.name} ({v.verdict}): {row}; graded again alone: another wrong body ran here")
+                    print(f"   {v.name} ({v.verdict}): {row}; graded again alone: another body of this round hides"
+                          " what its own did")
                     continue
                 for ok, what in checks:
                     check(ok, what)
