@@ -91,7 +91,8 @@ Box bounding_box(const Sphere& sphere);
 
 // Exercise 18.2: the smallest box that holds a moving sphere at every time in [0, 1]: its
 // centre moves along a straight line, so that is the box of the sphere at time 0 and the
-// sphere at time 1 together (for a sphere that does not move, its own box).
+// sphere at time 1 together (for a sphere that does not move, its own box). Compared exactly,
+// on numbers every way of taking that union gives exactly.
 Box swept_box(const Sphere& sphere);
 
 }  // namespace rt

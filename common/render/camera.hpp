@@ -54,7 +54,9 @@ inline constexpr auto kLensNames = names_of<LensShape>({"square", "disk"});
 // is uniform (equal areas of u to equal areas of the disk) and keeps strata of u compact
 // (each stratum of a 4 x 4 pattern lands in a patch less than 1 across; the polar map's
 // outer arcs are 1.41), in any orientation: the tests check these properties, not where a
-// particular u lands. Shirley and Chiu's concentric map (book §16.2) is one.
+// particular u lands. Shirley and Chiu's concentric map (book §16.2) is one. The square's
+// points are compared exactly for u in halves, quarters and eighths, where every way of
+// writing 2u - 1 gives the same bits.
 Vec2 lens_point(const Vec2& u, LensShape shape);
 
 // Exercise 16.2: the thin-lens version of perspective_ray: the ray from the point `lens`
@@ -71,6 +73,7 @@ Ray thin_lens_ray(const Vec3& eye, const Basis& uvw, Real d, const Vec2& uv, Rea
 // Exercise 18.1: the time of a ray in stratum k of n equal strata of the shutter interval
 // [open, close), at the place u in [0, 1) inside its stratum. Always below close (rounding
 // must not push it there), except for an instant shutter, open == close: then open.
+// Within rounding, and exactly only where every way is exact (strata of [0, 1) in quarters).
 Real shutter_time(int k, int n, Real u, Real open, Real close);
 
 // Where one camera ray starts in each of its dimensions. A pinhole camera ignores the lens

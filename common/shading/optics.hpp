@@ -12,6 +12,10 @@ namespace rt {
 // axis): any arrangement of the formula passes, glm::reflect's too.
 Vec3 reflect(const Vec3& d, const Vec3& n);
 
+// Exercises 8.1-8.3 are graded within rounding, never by their bits (8.1: Snell's law to
+// 10^3 machine epsilons, unit length to 10^2; the rest to float's 10^-5), and exactly only
+// where every way is exact: beer() at distance 0 is 1.
+
 // Exercise 8.1: Snell's law through the cosines (course §9.7). d is unit and points towards
 // the surface; n is the unit normal on the side d comes from (d . n <= 0); the ray passes
 // from index n_from into index n_to. True and `t` the unit transmitted direction, or false
