@@ -21,10 +21,15 @@ for the file's helper region), and "// @body" followed by the body.
 
 To keep it quick, variants share rounds: one grade per round, on the round's chapters only.
 A wrong body in chapter c also reaches the programs of later chapters (they link the
-student's exercises up to theirs), so a round holds at most one fail variant, and only pass
-variants of earlier chapters beside it. Fail variants are graded on their unit tests only
-(tools/grade --units) unless they say "// images". Rounds run in as many lanes as
-there are cores, each on a copy of its own.
+student's exercises up to theirs), so a round holds at most one fail variant of a chapter,
+and only pass variants of earlier chapters beside it. Pass variants of different exercises
+of one chapter share its file in a round (correct answers together are still correct);
+should that chapter miss full marks, each of them is graded again alone, to say which. A
+fail variant whose every line about it also ran another wrong body of its round is graded
+again, in a round with others whose lines ran none of their exercises (what hid each is in
+its lines), and alone if it is hidden once more. Fail variants are graded on their unit
+tests only (tools/grade --units) unless they say "// images". Rounds run in as many lanes
+as there are cores, each on a copy of its own.
 """
 import os
 import re
@@ -93,8 +98,9 @@ def put(text, opener, body):
     return text[:a] + body + text[b:]
 
 
-def exercise_file(root, work, chapter, variant):
-    """The chapter's exercise file with the reference's bodies and the variant's one."""
+def exercise_file(root, work, chapter, variants=()):
+    """The chapter's exercise file with the reference's bodies and the variants' ones (of
+    different exercises), their helper lines one after another."""
     solution = next((root / "solutions").glob(f"ch{chapter}_*.cpp"))
     target = work / "exercises" / solution.name
     stub = target.read_text()
@@ -103,15 +109,18 @@ def exercise_file(root, work, chapter, variant):
         number = m[1]
         a, b = region(reference, r"// @exercise " + re.escape(number) + r" \|")
         stub = put(stub, r"// @exercise " + re.escape(number) + r" \|", reference[a:b])
-    if variant:
+    helpers = ""
+    for variant in variants:
         stub = put(stub, r"// @exercise " + re.escape(variant.exercise) + r" \|", variant.body)
-        if variant.helpers:
-            stub = put(stub, r"// @helpers", variant.helpers)
+        helpers += variant.helpers
+    if helpers:
+        stub = put(stub, r"// @helpers", helpers)
     target.write_text(stub)
 
 
 def rounds(variants):
-    """Rounds of variants, at most one per chapter each, as the module doc says."""
+    """Rounds of variants, as the module doc says: at most one fail variant of a chapter each,
+    and pass variants of one chapter only beside others of different exercises."""
     fails = sorted((v for v in variants if v.verdict == "fail"), key=lambda v: (v.chapter, v.name))
     passes = sorted((v for v in variants if v.verdict == "pass"), key=lambda v: (v.chapter, v.name))
     out = []
@@ -127,17 +136,18 @@ def rounds(variants):
             out.append([f])
         else:
             group.append(f)
-    # Correct ones go where no wrong body of an earlier chapter reaches them.
+    # Correct ones go where no wrong body of their chapter or an earlier one reaches them, one
+    # per exercise.
     for group in out:
         lowest = min(g.chapter for g in group)
         for p in list(passes):
-            if p.chapter < lowest and all(p.chapter != g.chapter for g in group):
+            if p.chapter < lowest and all(p.exercise != g.exercise for g in group):
                 group.append(p)
                 passes.remove(p)
     while passes:
         group = []
         for p in list(passes):
-            if all(p.chapter != g.chapter for g in group):
+            if all(p.exercise != g.exercise for g in group):
                 group.append(p)
                 passes.remove(p)
         out.append(group)
@@ -179,16 +189,16 @@ def main():
         # one configuration serves every round (no --solved to change), and a round
         # recompiles only the files of its variants.
         for c in chapters:
-            exercise_file(root, copy, c, None)
+            exercise_file(root, copy, c)
         copies.append((copy, {p.name: p.read_text() for p in (copy / "exercises").glob("*.cpp")}))
 
     def grade(lane, group):
         copy, pristine = copies[lane]
         for name, text in pristine.items():
             (copy / "exercises" / name).write_text(text)
-        for v in group:
-            exercise_file(root, copy, v.chapter, v)
         mine = sorted({v.chapter for v in group})
+        for c in mine:
+            exercise_file(root, copy, c, [v for v in group if v.chapter == c])
         units = all(not v.images for v in group)
         command = ["tools/grade", *mine, "--build", "build/exercises", "--solved", ""] + (["--units"] if units else [])
         start = time.monotonic()
@@ -206,11 +216,13 @@ def main():
         return results
 
     def judge(v, group, out):
-        """The checks of one variant, or None when another wrong body of its round hides
-        whether its own failure is named (then it is graded again, alone)."""
+        """The checks of one variant, its row, and the exercises its lines ran; checks None
+        when another body of its round hides what its own did (another wrong body, whether its
+        failure is named; another correct one of its chapter, which of them cost the full
+        marks): then it is graded again (the exercises None when it must be alone)."""
         s = score(out, v.chapter)
         if s is None:
-            return [(False, f"{v.name}: no scorecard row for ch{v.chapter}:\n{out}")], ""
+            return [(False, f"{v.name}: no scorecard row for ch{v.chapter}:\n{out}")], "", None
         unit_ok, unit_total, g_ok, g_total = s
         full = unit_ok == unit_total and (g_ok is None or g_ok == g_total)
         lines = [l for l in out.splitlines() if l.startswith(f"  ch{v.chapter} ")]
@@ -222,51 +234,77 @@ def main():
         unreadable = [l for l in lines if "{?}" in l or re.search(r"\b0x[0-9a-f]{6,}\b", l)]
         checks.append((not unreadable, f"{v.name}: a failure line prints no value:\n" + "\n".join(unreadable)))
         if v.verdict == "pass":
+            if not full and any(w is not v and w.chapter == v.chapter for w in group):
+                return None, row, None
             checks.append((full, f"{v.name} (a correct answer: {v.why}) did not get full marks: {row}\n" +
                            "\n".join(lines)))
-            return checks, row
+            return checks, row, None
         # A line names the variant when it is about its exercise (a test named for it, or one
         # that ran it) and ran no other wrong body of this round.
         others = {w.exercise for w in group if w.verdict == "fail" and w.chapter < v.chapter}
 
+        def ran(line):
+            m = re.search(r"\(ran your exercises ([0-9. ]+)\)", line)
+            return set(m[1].split()) if m else None
+
+        def about(line):
+            return bool(re.search(rf'unit test "{re.escape(v.exercise)} ', line) or v.exercise in (ran(line) or ()))
+
         def names(line, excluded):
-            ran = re.search(r"\(ran your exercises ([0-9. ]+)\)", line)
-            ran = set(ran[1].split()) if ran else None
-            if ran is None and excluded:
+            if ran(line) is None and excluded:
                 return False
-            about = re.search(rf'unit test "{re.escape(v.exercise)} ', line) or (ran and v.exercise in ran)
-            return bool(about) and not (ran and ran & excluded)
+            return about(line) and not (ran(line) or set()) & excluded
 
         if others and not any(names(l, others) for l in lines):
-            return None, row
+            # What hid it: every exercise its lines ran (none known for a line that does not say).
+            said = [ran(l) for l in lines if about(l)]
+            return None, row, None if None in said else set().union(*said) - {v.exercise}
         checks.append((not full, f"{v.name} (wrong: {v.why}) got full marks: {row}"))
         checks.append((any(names(l, others) for l in lines),
                        f"{v.name}: no failure line names exercise {v.exercise}:\n" + "\n".join(lines)))
         if v.expect:
             checks.append((any(v.expect in l for l in lines),
                            f"{v.name}: no failure line says '{v.expect}':\n" + "\n".join(lines)))
-        return checks, row
+        return checks, row, None
 
+    def regroup(hidden):
+        """Rounds for the variants graded again: a wrong one shares a round with others of
+        other chapters when none of theirs is an exercise that ran in its lines (what hid it),
+        nor its exercise in theirs; the rest alone."""
+        out = []
+        for v, ran in hidden:
+            fits = [g for g in out if ran is not None and all(
+                b is not None and w.chapter != v.chapter and w.exercise not in ran and v.exercise not in b
+                for w, b in g)]
+            if v.verdict == "fail" and fits:
+                fits[0].append((v, ran))
+            else:
+                out.append([(v, ran)])
+        return [[v for v, _ in g] for g in out]
+
+    # Graded again: first in rounds that keep apart what hid each variant, then whatever is
+    # still hidden alone, where nothing can hide it.
     groups = rounds(variants)
-    again = []
-    for attempt in (1, 2):
+    for attempt in (1, 2, 3):
         results = run_rounds(groups)
+        hidden = []
         for group in groups:
             mine, units, out, seconds = results[id(group)]
             print(f"-- round {', '.join(v.name for v in group)}: grade {' '.join(mine)}"
                   f"{' --units' if units else ''} ({seconds:.0f} s)")
             for v in group:
-                checks, row = judge(v, group, out)
+                checks, row, ran = judge(v, group, out)
                 if checks is None:
-                    again.append([v])
-                    print(f"   {v.name} ({v.verdict}): {row}; graded again alone: another wrong body ran here")
+                    hidden.append((v, ran))
+                    print(f"   {v.name} ({v.verdict}): {row}; graded again: another body of this round hides what"
+                          " its own did")
                     continue
                 for ok, what in checks:
                     check(ok, what)
                 print(f"   {v.name} ({v.verdict}): {row}")
-        groups, again = again, []
-        if not groups:
+        if not hidden:
             break
+        groups = regroup(hidden) if attempt == 1 else [[v] for v, _ in hidden]
     finish(f"fairness session ({len(variants)} variants)")
 
 

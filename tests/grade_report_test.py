@@ -3,7 +3,8 @@
 student_session meets only by chance. A failure that ran an earlier chapter's failing
 exercise points back to it; what waits for an unwritten exercise is one scorecard line;
 a passed golden image and a missing one get their rows; --expect sets the exit code; text
-is escaped in the page; a chapter's key is written after its record.
+is escaped in the page; a chapter's key is written after its record; the hint names the
+exercise that is wrong, not one that fails only through it.
 
   grade_report_test.py ROOT WORK
 """
@@ -84,4 +85,24 @@ check(r.returncode == 0, f"without --expect the exit code is 0 whatever the scor
 (state / "ch15.json").unlink()
 r = grade()
 check(r.returncode == 1 and "no result for chapter 15" in r.stderr, f"a missing record: {r.stderr!r}")
+
+# The hint names the exercise that is wrong, not one that fails only through it: a wrong 9.2
+# fails the test named for 9.1 that runs both, and its own; 9.1 is right. Chapter 10's failure
+# ran both, and points back to 9.2 alone (it used to say "start with 9.1, 9.2").
+state9 = work / "build9" / "grade"
+state9.mkdir(parents=True)
+(state9 / "ch09.unitscore").write_text("1 3\n")
+(state9 / "ch09.unit").write_text(
+    '  ch09 unit test "9.1 instances hit where the mesh does": dot >= 0.999 is false: -1 >= 0.999'
+    ' (ran your exercises 9.1 9.2)\n'
+    '  ch09 unit test "9.2 mirrors and near-flat scales": dot > 0 is false: -1 > 0 (ran your exercises 9.2)\n')
+(state9 / "ch10.unitscore").write_text("0 1\n")
+(state9 / "ch10.unit").write_text(
+    '  ch10 unit test "10.4 instances in the tree": 3 == 4 is false (ran your exercises 9.1 9.2 10.1 10.4)\n')
+r = subprocess.run([sys.executable, root / "tools" / "grade_report.py", "--build", work / "build9", "--state", state9,
+                    "--report", work / "report9", "--chapters", "09 10", "--units", "--graded", "09=k9",
+                    "--graded", "10=k10"], capture_output=True, text=True)
+want = ('  ch10 unit test "10.4 instances in the tree": 3 == 4 is false (ran your exercises 9.1 9.2 10.1 10.4); '
+        "start with 9.2, which fails its own tests in its chapter")
+check(want in r.stdout.splitlines(), f"the hint names the wrong exercise, 9.2, not 9.1:\n{r.stdout}{r.stderr}")
 finish("grade_report")

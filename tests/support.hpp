@@ -7,6 +7,7 @@
 
 #include <doctest/doctest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <ostream>
@@ -25,6 +26,19 @@ struct StringMaker<glm::vec<L, T, Q>> {
             s += toString(v[i]);
         }
         return s + ")";
+    }
+};
+
+// Arrays by value, "{1, 2}" (chapter 04's projection axes), not "{?}".
+template <class T, std::size_t N>
+struct StringMaker<std::array<T, N>> {
+    static String convert(const std::array<T, N>& a) {
+        String s = "{";
+        for (std::size_t i = 0; i < N; ++i) {
+            if (i) s += ", ";
+            s += toString(a[i]);
+        }
+        return s + "}";
     }
 };
 

@@ -35,32 +35,48 @@ TEST_CASE("1.1 camera_basis of the standard camera is the world frame") {
     CHECK(b.w == Vec3(0, 0, 1));
 }
 
+// Exercise 1.2's tolerance (render/camera.hpp): 4 machine epsilons of the window's size,
+// |l| + |r| for u and |b| + |t| for v, however the map is arranged.
+doctest::Approx window_coordinate(double want, Real low, Real high) {
+    return doctest::Approx(want).epsilon(4 * kEps).scale(std::abs(low) + std::abs(high));
+}
+
 TEST_CASE("1.2 window_point maps pixel centres per course §9.2") {
     // A 4x3 image on the window [-2, 2] x [-1.5, 1.5]: pixels are exactly 1 unit square.
     const Window win{-2, 2, -1.5, 1.5};
+    const auto u = [&](double want) { return window_coordinate(want, win.l, win.r); };
+    const auto v = [&](double want) { return window_coordinate(want, win.b, win.t); };
     const Vec2 first = window_point(0.5, 0.5, 4, 3, win);  // centre of pixel (0, 0)
-    CHECK(first.x == Real(-1.5));
-    CHECK(first.y == Real(-1));
+    CHECK(first.x == u(-1.5));
+    CHECK(first.y == v(-1));
     const Vec2 last = window_point(3.5, 2.5, 4, 3, win);  // centre of pixel (3, 2)
-    CHECK(last.x == Real(1.5));
-    CHECK(last.y == Real(1));
+    CHECK(last.x == u(1.5));
+    CHECK(last.y == v(1));
     // The image's outer edges are the window's edges.
-    CHECK(window_point(0, 0, 4, 3, win) == Vec2(-2, -1.5));
-    CHECK(window_point(4, 3, 4, 3, win) == Vec2(2, 1.5));
+    const Vec2 bottom_left = window_point(0, 0, 4, 3, win), top_right = window_point(4, 3, 4, 3, win);
+    CHECK(bottom_left.x == u(-2));
+    CHECK(bottom_left.y == v(-1.5));
+    CHECK(top_right.x == u(2));
+    CHECK(top_right.y == v(1.5));
 
     // u_s = l + (r - l)(i + 0.5)/n_x for every pixel of an odd-sized image on an offset window.
     const Window w2{1, 3, -5, -4};
     for (int i = 0; i < 7; ++i)
         for (int j = 0; j < 5; ++j) {
             const Vec2 p = window_point(Real(i) + Real(0.5), Real(j) + Real(0.5), 7, 5, w2);
-            CHECK(p.x == doctest::Approx(1 + 2 * (i + 0.5) / 7).epsilon(4 * kEps));
-            CHECK(p.y == doctest::Approx(-5 + 1 * (j + 0.5) / 5).epsilon(4 * kEps));
+            CAPTURE(i);
+            CAPTURE(j);
+            CHECK(p.x == window_coordinate(1 + 2 * (i + 0.5) / 7, w2.l, w2.r));
+            CHECK(p.y == window_coordinate(-5 + 1 * (j + 0.5) / 5, w2.b, w2.t));
         }
 }
 
 TEST_CASE("1.2 the centre pixel of an odd image looks straight ahead") {
+    // (0, 0) to within the tolerance: fma(x, (r - l)/nx, l) gives -5.55e-17 here, and is right.
     const Window win{-1, 1, -1, 1};
-    CHECK(window_point(Real(1.5), Real(1.5), 3, 3, win) == Vec2(0, 0));
+    const Vec2 centre = window_point(Real(1.5), Real(1.5), 3, 3, win);
+    CHECK(centre.x == window_coordinate(0, win.l, win.r));
+    CHECK(centre.y == window_coordinate(0, win.b, win.t));
 }
 
 TEST_CASE("1.3 orthographic rays are parallel and start on the eye's plane") {
@@ -85,6 +101,22 @@ TEST_CASE("1.4 perspective rays leave the eye and reach the image plane at t = 1
     CHECK(glm::dot(s, b.u) == doctest::Approx(0.75).epsilon(8 * kEps));
     CHECK(glm::dot(s, b.v) == doctest::Approx(-0.25).epsilon(8 * kEps));
     CHECK(glm::dot(s, b.w) == doctest::Approx(-2.5).epsilon(8 * kEps));
+}
+
+TEST_CASE("1.4 the direction is relative to the eye: a camera 10^5 from the origin keeps its digits") {
+    // The same frame and window point with the eye far away: the direction u_s u + v_s v - d w
+    // does not depend on the eye, so its uvw coordinates keep the 8 epsilons. Computed as
+    // s - e, with s = e + u_s u + v_s v - d w first, it keeps only what the eye's size leaves.
+    const Basis b = camera_basis(Vec3(1, 1, -1), Vec3(0, 1, 0));
+    for (const Vec3 eye : {Vec3(1e5, -2e5, 3e5), Vec3(-4e4, 7e4, 1e5)}) {
+        const Ray r = perspective_ray(eye, b, Real(2.5), Vec2(0.75, -0.25));
+        CAPTURE(eye);
+        CAPTURE(r.direction);
+        CHECK(r.origin == eye);
+        CHECK(glm::dot(r.direction, b.u) == doctest::Approx(0.75).epsilon(8 * kEps));
+        CHECK(glm::dot(r.direction, b.v) == doctest::Approx(-0.25).epsilon(8 * kEps));
+        CHECK(glm::dot(r.direction, b.w) == doctest::Approx(-2.5).epsilon(8 * kEps));
+    }
 }
 
 TEST_CASE("View: the field of view is the angle the rays actually span (analytic)") {

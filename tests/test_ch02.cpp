@@ -36,10 +36,19 @@ void miss_tangent_scale(RootsFn roots) {
     Real tn = -1, tf = -1;
     // Passes 1.5 from the centre of a unit sphere.
     CHECK_FALSE(roots(Ray{Vec3(-5, 1.5, 0), Vec3(1, 0, 0)}, Vec3(0), 1, tn, tf));
-    // Grazes the top of a unit sphere: a double root at t = 5 (all values exact).
-    REQUIRE(roots(Ray{Vec3(-5, 1, 0), Vec3(1, 0, 0)}, Vec3(0), 1, tn, tf));
-    CHECK(tn == 5);
-    CHECK(tf == 5);
+    // Grazes the top of a sphere of radius 3: a double root at t = 2. Every number is exact
+    // (|f| = 5, b = -8, A = 4, C = 16), so the discriminant is exactly 0 however C and the
+    // discriminant are written, and both roots are exactly 2. (A grazing ray whose |f| is not
+    // exact, sqrt(26) say, may come out as two roots a rounding apart, or as a near miss: the
+    // contract leaves it free.)
+    REQUIRE(roots(Ray{Vec3(-4, 3, 0), Vec3(2, 0, 0)}, Vec3(0), 3, tn, tf));
+    CHECK(tn == 2);
+    CHECK(tf == 2);
+    // Tangent at its own origin, a point on the sphere: a double root at t = 0 (b = C = 0).
+    // The stable form's q is 0 there, and C/q would be 0/0 (book §2.3).
+    REQUIRE(roots(Ray{Vec3(1, 5, -2), Vec3(0, 0, 0.5)}, Vec3(1, 2, -2), 3, tn, tf));
+    CHECK(tn == 0);
+    CHECK(tf == 0);
     // Scaling d by 4 divides t by 4: nothing may assume a unit direction.
     REQUIRE(roots(Ray{Vec3(0, 0, 10), Vec3(0, 0, -4)}, Vec3(0, 0, 1), 2, tn, tf));
     CHECK(tn == doctest::Approx(1.75).epsilon(4 * kEps));
@@ -168,6 +177,26 @@ TEST_CASE("2.2 stress: a sphere 10^4 radii away agrees with a long-double refere
     CAPTURE(worst_roots);
     CAPTURE(worst_reference);
     CHECK(worst <= 64 * kEps);
+}
+
+TEST_CASE("2.2 one cure is not enough: a ray starting just outside a big sphere keeps its near root's digits") {
+    // Book §2.3: the far sphere needs the geometric discriminant, and this ray the stable
+    // roots. Its origin is 1 outside a sphere of radius 3999 (f = (2400, 3200, 0), |f| = 4000,
+    // C = 7999: every input exact, in float too) and it heads inwards, so t_near (about 1.48)
+    // is tiny beside t_far (about 11423): (-b - root)/A subtracts two numbers that agree to
+    // three digits and keeps the rounding of the larger (about 2000 epsilons in double, 470
+    // in float), while q and C/q add and divide (under 1). The contract: 64 epsilons.
+    const Vec3 centre(10, -20, 30);
+    const Ray r{centre + Vec3(2400, 3200, 0), Vec3(-0.375, -0.5625, 0.125)};
+    long double want_near = 0, want_far = 0;
+    REQUIRE(reference_roots(r, centre, 3999, want_near, want_far));
+    Real tn = 0, tf = 0;
+    REQUIRE(sphere_roots(r, centre, 3999, tn, tf));
+    CAPTURE(r);
+    CAPTURE(double(want_near));
+    CAPTURE(double(want_far));
+    CHECK(std::abs(tn - want_near) / want_near <= 64 * kEps);
+    CHECK(std::abs(tf - want_far) / want_far <= 64 * kEps);
 }
 
 TEST_CASE("2.2 stress: rays leaving a sphere's surface find t_near close to 0") {

@@ -50,12 +50,39 @@ void misses_and_intervals(TriangleFn fn) {
     // In the triangle's plane, across its interior: M = 0 (3.1) and det = U + V + W = 0
     // (3.2), which the contract makes a miss, not a division by zero.
     CHECK_FALSE(fn(Ray{Vec3(-1, 0.5, 0), Vec3(1, 0, 0)}, a, b, c, Interval{}, h));
+    // Parallel to the plane, below it: M = 0 again. Divided by, it makes t = +inf, which
+    // [0, inf] contains, and barycentrics of 0/0 that pass every comparison.
+    CHECK_FALSE(fn(Ray{Vec3(0.5, 0.5, -1), Vec3(1, 0, 0)}, a, b, c, Interval{}, h));
     // Every miss leaves the result alone: the library may pass in the best hit so far.
     CHECK(h.t == doctest::Approx(4).epsilon(4 * kEps));
     CHECK(h.beta == doctest::Approx(0.25).epsilon(4 * kEps));
     // Either side: no back-face culling.
     REQUIRE(fn(Ray{Vec3(0.5, 0.25, -1), Vec3(0, 0, 1)}, a, b, c, Interval{}, h));
     CHECK(h.t == doctest::Approx(1).epsilon(4 * kEps));
+}
+
+void edges_and_ends(TriangleFn fn) {
+    // The erratum of book §3.2: the pseudo-code's tests keep the edges, the text's strict ones
+    // lose them. Rays straight down onto the triangle (0,0,0), (2,0,0), (0,2,0) at (x, y) hit at
+    // t = 1 with beta = x/2 and gamma = y/2, every number exact (so compared exactly): on each
+    // edge (gamma = 0, beta = 0, beta + gamma = 1) and at each vertex.
+    const Vec3 a(0, 0, 0), b(2, 0, 0), c(0, 2, 0);
+    for (const Vec2 xy : {Vec2(1, 0), Vec2(0, 1), Vec2(1, 1), Vec2(0, 0), Vec2(2, 0), Vec2(0, 2)}) {
+        TriangleHit h{-1, -1, -1};
+        CAPTURE(xy);
+        REQUIRE(fn(Ray{Vec3(xy.x, xy.y, 1), Vec3(0, 0, -1)}, a, b, c, Interval{}, h));
+        CHECK(h.t == 1);
+        CHECK(h.beta == xy.x / 2);
+        CHECK(h.gamma == xy.y / 2);
+    }
+    // The interval is closed (book §2.4): a hit exactly at either end counts.
+    const Ray r{Vec3(0.5, 0.25, 1), Vec3(0, 0, -0.25)};  // t = 4 exactly
+    for (const Interval iv : {Interval{4, 4}, Interval{0, 4}, Interval{4, kInfinity}}) {
+        TriangleHit h{-1, -1, -1};
+        CAPTURE(iv);
+        REQUIRE(fn(r, a, b, c, iv, h));
+        CHECK(h.t == 4);
+    }
 }
 
 TEST_CASE("3.1 course exercise 2: (1,1,1) + t(-1,-1,-1) hits the triangle at t = 2/3, beta = gamma = 1/3") {
@@ -69,6 +96,13 @@ TEST_CASE("3.1 misses, the interval, parallel rays and non-unit directions") {
 }
 TEST_CASE("3.2 misses, the interval, parallel rays and non-unit directions") {
     misses_and_intervals(ray_triangle_watertight);
+}
+
+TEST_CASE("3.1 edges, vertices and the interval's ends count (the erratum of §3.2)") {
+    edges_and_ends(ray_triangle);
+}
+TEST_CASE("3.2 edges, vertices and the interval's ends count") {
+    edges_and_ends(ray_triangle_watertight);
 }
 
 TEST_CASE("3.1 and 3.2 agree on random rays") {
@@ -132,7 +166,7 @@ TEST_CASE("Triangle and Mesh records: barycentrics, unit normal, closest triangl
     CHECK_FALSE(occluded(mesh, Ray{Vec3(0.9, 0.9, 5), Vec3(0, 0, -1)}, Interval{}));
 }
 
-TEST_CASE("watertightness: 10^6 rays at shared edges and vertices, zero leaks for 3.2") {
+TEST_CASE("3.2 watertightness: 10^6 rays at shared edges and vertices, zero leaks") {
     // The table in book §3.5 comes from these numbers (and bench/watertight for more).
     const MeshData sphere = icosphere(Vec3(0.1, -0.2, 0.3), 1, 3);
     const MeshData cube = subdivided_cube(Vec3(0.1, -0.2, 0.3), 1.7, 8);

@@ -46,6 +46,21 @@ TEST_CASE("4.1 projection_axes drops the axis of the largest normal component (e
     CHECK(projection_axes(Vec3(-0.7, 0.2, -0.6)) == std::array<int, 2>{1, 2});
 }
 
+TEST_CASE("4.1 a tie between the largest components drops either of them; the smallest is always kept") {
+    using Axes = std::array<int, 2>;
+    const Axes x{1, 2}, y{0, 2}, z{0, 1};
+    const Axes xy = projection_axes(Vec3(0.6, -0.6, 0.2)), xz = projection_axes(Vec3(-0.5, 0.1, 0.5)),
+               yz = projection_axes(Vec3(0, 0.7, -0.7)), all = projection_axes(Vec3(1, -1, 1));
+    CAPTURE(xy);
+    CAPTURE(xz);
+    CAPTURE(yz);
+    CAPTURE(all);
+    CHECK((xy == x || xy == y));
+    CHECK((xz == x || xz == z));
+    CHECK((yz == y || yz == z));
+    CHECK((all == x || all == y || all == z));
+}
+
 TEST_CASE("4.2 crossing number: convex, concave, either winding") {
     const std::vector<Vec2> square{{0, 0}, {1, 0}, {1, 1}, {0, 1}};
     CHECK(inside_polygon_2d(square, Vec2(0.5, 0.5)));

@@ -1,5 +1,6 @@
 // Chapter 05: the ray tracing program (course §9.4-9.4.1): closest hit, shading, scene files.
 #include "accel/surface_list.hpp"
+#include "geometry/polygon.hpp"
 #include "geometry/sphere.hpp"
 #include "io/scene_file.hpp"
 #include "render/integrators.hpp"
@@ -40,13 +41,41 @@ TEST_CASE("5.1 SurfaceList::hit returns the closest hit in the interval, whateve
         REQUIRE(list.hit(r, Interval{4.5, kInfinity}, rec));  // past the near sphere
         CHECK(rec.surface == far_id);
         CHECK(rec.t == doctest::Approx(8));
+        // A miss leaves the record alone: the caller's own hit (here a made-up one) survives.
         HitRecord untouched;
+        untouched.t = Real(1.25);
+        untouched.surface = 7;
+        untouched.material = 5;
         CHECK_FALSE(list.hit(r, Interval{0, 1.5}, untouched));
-        CHECK(untouched.surface == kNone);  // a miss leaves the record alone
+        CHECK(untouched.t == Real(1.25));
+        CHECK(untouched.surface == 7);
+        CHECK(untouched.material == 5);
         CHECK(list.bounding_box().min.z == doctest::Approx(-12));
     }
     HitRecord rec;
     CHECK_FALSE(SurfaceList().hit(Ray{Vec3(0), Vec3(1, 0, 0)}, Interval{}, rec));
+}
+
+TEST_CASE("5.1 at exactly equal t the later surface in the list wins (the header's rule)") {
+    // Two copies of one sphere, and two of one square: every ray meets each pair at the same t,
+    // to the bit. Shrinking max to each hit's t (the interval closed) keeps the later one;
+    // the acceleration structures of chapters 10-12 rank the earlier one first (book §5.3).
+    for (int copies : {2, 3}) {
+        SurfaceList list;
+        for (int k = 0; k < copies; ++k) list.add(Sphere(Vec3(0, 0, -4), 1), MaterialId(k + 1));
+        for (int k = 0; k < copies; ++k)
+            list.add(Polygon({Vec3(2, -1, -6), Vec3(4, -1, -6), Vec3(4, 1, -6), Vec3(2, 1, -6)}), MaterialId(k + 10));
+        HitRecord rec;
+        CAPTURE(copies);
+        REQUIRE(list.hit(Ray{Vec3(0), Vec3(0, 0, -1)}, Interval{}, rec));
+        CHECK(rec.t == doctest::Approx(3));
+        CHECK(rec.surface == SurfaceId(copies - 1));
+        CHECK(rec.material == MaterialId(copies));
+        REQUIRE(list.hit(Ray{Vec3(0), Vec3(3, 0, -6)}, Interval{}, rec));
+        CHECK(rec.t == doctest::Approx(1));
+        CHECK(rec.surface == SurfaceId(2 * copies - 1));
+        CHECK(rec.material == MaterialId(copies + 9));
+    }
 }
 
 TEST_CASE("5.1 no field of a farther hit survives in the closest one") {
@@ -127,6 +156,21 @@ TEST_CASE("5.3 blinn_phong_highlight: c_l c_p max(0, n . h)^p") {
     CHECK(blinn_phong_highlight(Color(1), 8, Color(1), n, l, v2).r == doctest::Approx(std::pow(h.z, 8)).epsilon(1e-5));
     // A light behind the surface lights nothing, even with an even exponent.
     CHECK(blinn_phong_highlight(Color(1), 2, Color(1), n, Vec3(0, 0, -1), v) == Color(0));
+}
+
+TEST_CASE("5.3 no highlight from a light behind the surface, even where h tips to n's side") {
+    // The light just below the surface's plane and the eye straight above: h = (l + v)/|l + v|
+    // has n . h = 0.67 > 0, so max(0, n . h)^p alone would light it (0.67^2 = 0.45).
+    const Vec3 n(0, 0, 1), below = glm::normalize(Vec3(1, 0, Real(-0.1))), above(0, 0, 1);
+    CHECK(glm::dot(n, glm::normalize(below + above)) > Real(0.5));
+    CHECK(blinn_phong_highlight(Color(1), 2, Color(1), n, below, above) == Color(0));
+    CHECK(blinn_phong_highlight(Color(0.5f), 30, Color(2), n, below, above) == Color(0));
+    // max(0, .) before the power: the light in front, the eye behind the surface with h tipped
+    // away from n (n . h = -0.88): an even exponent would turn it into a highlight.
+    const Vec3 front = glm::normalize(Vec3(1, 0, Real(0.2))), behind = glm::normalize(Vec3(-1, 0, -1));
+    CHECK(glm::dot(n, glm::normalize(front + behind)) < 0);
+    CHECK(blinn_phong_highlight(Color(1), 2, Color(1), n, front, behind) == Color(0));
+    CHECK(blinn_phong_highlight(Color(1), 4, Color(1), n, front, behind) == Color(0));
 }
 
 TEST_CASE("analytic: a Lambertian sphere under one directional light, orthographic") {

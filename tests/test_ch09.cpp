@@ -56,6 +56,30 @@ TEST_CASE("9.1 object_ray: points take the whole inverse, directions only its ma
     CHECK(moved.direction == r.direction);
 }
 
+TEST_CASE("9.1 an instance 10^6 from the origin: the direction carries none of the translation's rounding") {
+    // M^-1 d does not depend on the translation, so it keeps its digits however far the
+    // instance is (8 epsilons of |M^-1| |d|). Taken as M^-1 (e + d) - M^-1 e, both points carry
+    // the translation and the difference keeps only what 10^6 leaves of them.
+    const Affine to_world = Affine::scale(Vec3(2, 0.5, 1))
+                                .then(Affine::rotate(Vec3(1, 2, 3), 40))
+                                .then(Affine::translate(Vec3(1e6, -2e6, 3e6)));
+    const Affine to_object = inverse(to_world);
+    for (const Vec3 d : {Vec3(-1, 0.5, 2), Vec3(0.001, -0.002, 0.0015), Vec3(300, 100, -200)}) {
+        const Ray r{Vec3(1e6 + 3, -2e6 + 1, 3e6 - 2), d, Real(0.5)};
+        const Ray o = object_ray(to_object, r);
+        CAPTURE(d);
+        CAPTURE(o.direction);
+        const Vec3 want = to_object.vector(d);
+        const Real size =
+            glm::length(glm::abs(to_object.m[0]) * std::abs(d.x) + glm::abs(to_object.m[1]) * std::abs(d.y) +
+                        glm::abs(to_object.m[2]) * std::abs(d.z));
+        CHECK(glm::length(o.direction - want) <= 8 * test::kEps * size);
+        const Vec3 origin = to_object.point(r.origin);
+        CHECK(glm::length(o.origin - origin) <= 8 * test::kEps * (glm::length(to_object.t) + glm::length(origin)));
+        CHECK(o.time == Real(0.5));
+    }
+}
+
 TEST_CASE("9.2 world_normal: the inverse transpose keeps normals perpendicular (the ellipsoid's gradient)") {
     // The course's ellipsoid: world point q = M p for p on the unit sphere. Its outward
     // normal is the gradient of |M^-1 (q - t)|^2, proportional to M^-T M^-1 (q - t).
@@ -76,6 +100,76 @@ TEST_CASE("9.2 world_normal: the inverse transpose keeps normals perpendicular (
     CHECK(failures == 0);
     // A plain scale: the normal of x = 1 on a box scaled by (2, 1, 1) still points along x.
     CHECK(world_normal(inverse(Affine::scale(Vec3(2, 1, 1))), Vec3(1, 0, 0)) == Vec3(1, 0, 0));
+}
+
+TEST_CASE("9.2 mirrors and near-flat scales: the normal stays unit, square to the surface, and outward") {
+    // The unit sphere stretched into an ellipsoid by each transform: at the world point q = M p
+    // + t its outward normal is M^-T p, made unit. A mirror (det M < 0) reverses a mesh's
+    // winding, not this normal: it still points away from the centre t. A scale of 1e-4
+    // flattens the sphere to a disk whose normals nearly all point along the flat axis.
+    const Affine cases[] = {
+        Affine::scale(Vec3(-1, 1, 1)).then(Affine::translate(Vec3(0, 2, 0))),        // a mirror image
+        Affine::scale(Vec3(1.5, -0.5, 2)).then(Affine::rotate(Vec3(0, 1, 0), 30)),   // another, stretched
+        Affine::scale(Vec3(-2, -1, -0.5)).then(Affine::rotate(Vec3(1, -1, 2), 75)),  // turned inside out
+        Affine::scale(Vec3(1, 1e-4, 1)).then(Affine::rotate(Vec3(1, 0, 1), 20)),     // nearly flat
+    };
+    pcg32 rng(17);
+    std::uniform_real_distribution<double> u(-1, 1);
+    for (std::size_t c = 0; c < std::size(cases); ++c) {
+        const Affine& to_world = cases[c];
+        const Affine to_object = inverse(to_world);
+        int failures = 0;
+        for (int k = 0; k < 300; ++k) {
+            const Vec3 p = unit_vector(Vec3{Real(u(rng)), Real(u(rng)), Real(u(rng))});
+            const Vec3 got = world_normal(to_object, p);  // the unit sphere's normal at p is p
+            const Vec3 want = unit_vector(glm::transpose(to_object.m) * p);
+            const Vec3 outward = to_world.vector(p);  // q - t: from the centre to the point
+            const Vec3 tangent = to_world.vector(glm::cross(p, Vec3(0.3, 0.5, 0.8)));
+            CAPTURE(c);
+            CAPTURE(p);
+            CAPTURE(got);
+            CAPTURE(want);
+            RT_CHECK_FIRST(failures, glm::length(got - want) <= 64 * test::kEps);
+            RT_CHECK_FIRST(failures, std::abs(glm::length(got) - 1) <= 8 * test::kEps);
+            RT_CHECK_FIRST(failures, glm::dot(got, outward) > 0);
+            RT_CHECK_FIRST(failures, std::abs(glm::dot(got, tangent)) <= 64 * test::kEps * glm::length(tangent));
+        }
+        CHECK(failures == 0);
+    }
+}
+
+TEST_CASE("9.3 every corner is needed: turns that make each corner alone the farthest along x") {
+    // For corner k of the box, the turn that takes the corner's offset from the centre to +x
+    // makes that corner the only one at the box's greatest x: a box that forgets it comes out
+    // short there. (A turn about a coordinate axis shares each extreme between two corners and
+    // cannot tell.) Each face against the box of the corners worked out in long double, within
+    // 8 epsilons of the size of what it sums.
+    const Box box{Vec3(1, -2, 0.5), Vec3(3, 1, 1.5)};
+    const Vec3 centre = (box.min + box.max) / Real(2), half = (box.max - box.min) / Real(2);
+    for (int k = 0; k < 8; ++k) {
+        const Vec3 offset(k & 1 ? half.x : -half.x, k & 2 ? half.y : -half.y, k & 4 ? half.z : -half.z);
+        const Vec3 along = glm::normalize(offset);
+        const Real degrees = glm::degrees(std::acos(along.x));
+        const Affine to_world =
+            Affine::rotate(glm::cross(along, Vec3(1, 0, 0)), degrees).then(Affine::translate(Vec3(5, -6, 7)));
+        const Box got = transform_box(to_world, box);
+        CAPTURE(k);
+        CAPTURE(got);
+        for (int i = 0; i < 3; ++i) {
+            long double low = to_world.t[i], high = to_world.t[i], size = std::abs(to_world.t[i]);
+            for (int j = 0; j < 3; ++j) {
+                const long double m = to_world.m[j][i], a = m * box.min[j], b = m * box.max[j];
+                low += std::min(a, b);
+                high += std::max(a, b);
+                size += std::abs(m) * std::max(std::abs(box.min[j]), std::abs(box.max[j]));
+            }
+            CAPTURE(i);
+            CHECK(std::abs(got.min[i] - low) <= 8 * test::kEps * size);
+            CHECK(std::abs(got.max[i] - high) <= 8 * test::kEps * size);
+        }
+        // The corner itself reaches the greatest x: |offset| past the centre's image.
+        CHECK(got.max.x == doctest::Approx(to_world.point(centre).x + glm::length(offset)).epsilon(1e-6));
+    }
 }
 
 TEST_CASE("9.3 transform_box: the box of the eight transformed corners") {

@@ -51,17 +51,39 @@ def chapter_table(ch, record):
     return lines
 
 
-def point_back(ch, line, chapters, records):
-    """A failure that ran an earlier chapter's exercise whose own tests fail there points back
-    to it: a wrong 14.1 shows in chapter 15's images, but is fixed in chapter 14."""
+def ran_exercises(line):
+    """The exercises a failure line says it ran ("(ran your exercises 9.1 9.2)"), or None."""
     m = re.fullmatch(r".*\(ran your exercises ([0-9. ]+)\)", line)
+    return set(m.group(1).split()) if m else None
+
+
+def wrong_exercises(records):
+    """The exercises that fail a unit test of their own which no other such exercise ran.
+
+    A test named for 9.1 that also runs 9.2 fails when 9.2 is wrong, 9.1 right: 9.1 then
+    fails only tests that a failing 9.2 ran too, and is not named; 9.2, failing a test that
+    ran no other of them, is. A line that does not say what it ran (a crash, a hang) counts
+    against its own exercise. Should every failing exercise be covered by another (each
+    test running both), all of them are named."""
+    own = []  # (exercise a failing test is named for, the exercises it ran or None)
+    for record in records.values():
+        for line in record["reasons"]:
+            m = re.search(r' unit test "([0-9]+\.[0-9]+) ', line)
+            if m:
+                own.append((m.group(1), ran_exercises(line)))
+    failing = {e for e, _ in own}
+    wrong = {e for e, ran in own if ran is None or (ran & failing) <= {e}}
+    return wrong or failing
+
+
+def point_back(ch, line, chapters, records, wrong):
+    """A failure that ran an earlier chapter's exercise whose own tests fail there points back
+    to it: a wrong 14.1 shows in chapter 15's images, but is fixed in chapter 14. Only the
+    exercises that are wrong (wrong_exercises) are named, not those failing through them."""
     hint = []
-    for e in m.group(1).split() if m else []:
+    for e in sorted(ran_exercises(line) or (), key=lambda e: tuple(int(x) for x in e.split("."))):
         c = "%02d" % int(e.split(".")[0])
-        if int(c) >= int(ch) or c not in chapters or c not in records:
-            continue
-        # e's dots match any character, as grep's did: "2.3" is found in "2.3 ", never wrongly.
-        if any(re.search(f'unit test "{e} ', r) for r in records[c]["reasons"]):
+        if int(c) < int(ch) and c in chapters and c in records and e in wrong:
             hint.append(e)
     if hint:
         line += f"; start with {', '.join(hint)}, which fails its own tests in its chapter"
@@ -120,6 +142,7 @@ def scorecard(args):
         f"{alpha * 100:g} % false-alarm rate, book §14.6).",
         " Drag the slider under a comparison to wipe between the reference (left) and yours (right).</p>",
     ]
+    wrong = wrong_exercises(records)
     card = ["%-8s %-12s %-12s %s" % ("chapter", "unit tests", "golden", "exercises")]
     reasons, warnings, n_cached, ok_none, ok_all = [], [], 0, True, True
     for ch in chapters:
@@ -134,7 +157,7 @@ def scorecard(args):
         golden = "%-12s" % "(not run)" if args.units else "%3d of %-5d" % (g_passed, g_total)
         card.append("ch%-6s %3d of %-5d %s %-10s%s" % (ch, passed, total, golden, source, note))
         out += chapter_table(ch, r)
-        mine = [point_back(ch, line, chapters, records) for line in r["reasons"]]
+        mine = [point_back(ch, line, chapters, records, wrong) for line in r["reasons"]]
         if mine:
             out.append("<p>What did not pass:</p><ul>")
             out += [f"<li><code>{esc(line.lstrip(' '))}</code></li>" for line in mine]

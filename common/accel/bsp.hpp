@@ -78,7 +78,9 @@ inline Box above_plane(Box cell, int axis, Real split) {
 // to both sides (more than 1.5 n listed from n) is not made: the next axis is tried, and
 // after all three, a leaf. The tests demand the tree itself: each node's axis and plane,
 // which primitives lie under each side, the leaves and the depth. The numbering of the
-// nodes is free.
+// nodes is free, and so is the way of halving: the plane is the cell's middle to within two
+// units in the last place of its coordinates ((min + max)/2 and min + (max - min)/2 both
+// pass), and exactly 0 for a cell symmetric about 0, where every way gives 0.
 BspRef build_midpoint(BspBuilder& builder, std::span<const std::uint32_t> items, const Box& cell, int depth);
 // @book-end
 

@@ -15,7 +15,10 @@ public:
     // Adds a surface and returns its id. An empty name becomes "KIND N" (e.g. "sphere 3").
     SurfaceId add(Shape shape, MaterialId material = 0, std::string name = "");
 
-    // Exercise 5.1: the closest hit over all surfaces in the interval.
+    // Exercise 5.1: the closest hit over all surfaces in the interval, as the whole record of
+    // the surface that made it; false and rec untouched if there is none. Of surfaces hit at
+    // exactly the same t, the later in the list (what shrinking the interval's max to each
+    // hit's t gives, the interval being closed); the search order is free.
     bool hit(const Ray& ray, Interval interval, HitRecord& rec) const;
     // Any hit in the interval, stopping at the first: the query of shadow rays.
     bool occluded(const Ray& ray, Interval interval) const;

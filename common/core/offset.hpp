@@ -26,7 +26,10 @@ struct Offset {
 // geometric normal turned towards that side), after Waechter and Binder (Ray Tracing Gems,
 // chapter 6). Each coordinate moves a fixed number of units in the last place of its own
 // magnitude, so the step grows with the rounding error of p wherever p is; coordinates near
-// zero, where units in the last place vanish, move a fixed small distance instead.
+// zero, where units in the last place vanish, move a fixed small distance instead. Graded on
+// each step's side and size (at most twice `ulps` units in the last place, or the fixed
+// step), and to the bit only where every way of taking it is exact: from (1, 0, 0) along
+// (1, 0, 0), x moves by exactly `ulps` units of epsilon.
 Vec3 offset_origin(const Vec3& p, const Vec3& n);
 
 // The constants of offset_origin for float and for double (see book §6.3).

@@ -12,8 +12,10 @@
 namespace rt {
 
 // Exercise 4.1: the two coordinate axes (0 = x, 1 = y, 2 = z) to keep when projecting a
-// polygon with normal n onto a coordinate plane: drop the axis where |n| is largest, so the
-// projection has the largest area and never collapses to a line.
+// polygon with normal n onto a coordinate plane, in increasing order: drop the axis where |n|
+// is largest, so the projection has the largest area and never collapses to a line. On a tie
+// between the largest components either of them may be dropped (both planes show the same
+// area).
 std::array<int, 2> projection_axes(const Vec3& n);
 
 // Exercise 4.2: the crossing-number test. True if p is inside the 2D polygon (any simple
@@ -54,7 +56,10 @@ private:
 };
 
 // Exercise 4.3: the plane hit, then the 2D test in the polygon's projection. True and
-// `result` set if the ray meets the polygon in the interval; false and untouched if not.
+// `result` set if the ray meets the polygon in the interval (closed: both ends count); false
+// and untouched if not. No side is culled. t is graded within rounding of the plane's (1e3
+// machine epsilons on the tests' random polygons), so the plane may be taken through any of
+// the vertices, with its offset n . v or without; exactly only where every number is.
 bool hit(const Polygon& polygon, const Ray& ray, Interval interval, PolygonHit& result);
 
 // The whole record: the point e + t d and the polygon's normal.

@@ -13,9 +13,18 @@ struct TriangleHit {
     Real t, beta, gamma;
 };
 
+// What both exercises are graded on: t in the interval (closed: both ends count) and the point
+// in the triangle, edges and vertices included (beta >= 0, gamma >= 0, beta + gamma <= 1: the
+// course's pseudo-code, not its text's strict inequalities, book §3.2); t, beta and gamma
+// within a few machine epsilons on the course's example, within rounding of each other on
+// random rays; compared exactly only where every number is exact, so that any way of
+// writing the determinants gives the same bits: rays straight down onto a triangle with
+// corners (0,0,0), (2,0,0), (0,2,0), through its edges and vertices and at an interval's ends.
+
 // Exercise 3.1: Cramer's rule with the shared sub-terms and the course's early exits
 // (t, then gamma, then beta). True if t is in the interval and the point is in the triangle.
-// A zero determinant M (a ray parallel to the triangle's plane or in it) is a miss.
+// A zero determinant M (a ray parallel to the triangle's plane or in it) is a miss. The order
+// of the exits and the grouping of the minors (as cross products, say) are free.
 bool ray_triangle(const Ray& ray, const Vec3& a, const Vec3& b, const Vec3& c, Interval interval, TriangleHit& result);
 
 // Exercise 3.2: the watertight test of Woop, Benthin and Wald (2013). A ray through an edge

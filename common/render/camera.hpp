@@ -21,19 +21,28 @@ struct Window {
     Real l, r, b, t;
 };
 
-// Exercise 1.1: the frame from a view direction and an up vector.
+// Exercise 1.1: the frame from a view direction and an up vector. Graded within a few machine
+// epsilons (unit lengths, right angles, u x v = w, w the reversed unit view direction, u
+// level), so any construction passes (Gram-Schmidt, glm::lookAt's); exactly the world axes
+// for the standard camera (looking down -z, up +y), where every number is exact.
 Basis camera_basis(const Vec3& view_direction, const Vec3& up);
 
 // Exercise 1.2: the windowing transform. (x, y) is a continuous position in the image,
 // with pixel (i, j) covering [i, i+1) x [j, j+1): its centre is (i + 0.5, j + 0.5). j counts
-// up from the bottom row, like v.
+// up from the bottom row, like v. Graded within 4 machine epsilons of the window's size
+// (|l| + |r| for u, |b| + |t| for v), never by its bits: any arrangement of the map passes,
+// the pixel's width first, a blend of the edges, std::fma.
 Vec2 window_point(Real x, Real y, int nx, int ny, const Window& window);
 
-// Exercise 1.3: the orthographic viewing ray through window point (u_s, v_s).
+// Exercise 1.3: the orthographic viewing ray through window point (u_s, v_s): from
+// e + u_s u + v_s v, direction -w exactly. Tested on numbers for which every way of writing
+// the sum is exact, so compared exactly.
 Ray orthographic_ray(const Vec3& eye, const Basis& uvw, const Vec2& uv);
 
 // Exercise 1.4: the perspective viewing ray through window point (u_s, v_s), with the
-// image plane at distance d in front of the eye (w_s = -d).
+// image plane at distance d in front of the eye (w_s = -d). Its direction u_s u + v_s v - d w
+// (not normalised) has uvw coordinates (u_s, v_s, -d) to within 8 machine epsilons, however
+// far the eye is from the origin: it never goes through the eye's coordinates.
 Ray perspective_ray(const Vec3& eye, const Basis& uvw, Real d, const Vec2& uv);
 
 // The shape of a thin lens (chapter 16): the course's square, or a round one.
@@ -45,7 +54,9 @@ inline constexpr auto kLensNames = names_of<LensShape>({"square", "disk"});
 // is uniform (equal areas of u to equal areas of the disk) and keeps strata of u compact
 // (each stratum of a 4 x 4 pattern lands in a patch less than 1 across; the polar map's
 // outer arcs are 1.41), in any orientation: the tests check these properties, not where a
-// particular u lands. Shirley and Chiu's concentric map (book §16.2) is one.
+// particular u lands. Shirley and Chiu's concentric map (book §16.2) is one. The square's
+// points are compared exactly for u in halves, quarters and eighths, where every way of
+// writing 2u - 1 gives the same bits.
 Vec2 lens_point(const Vec2& u, LensShape shape);
 
 // Exercise 16.2: the thin-lens version of perspective_ray: the ray from the point `lens`
@@ -62,6 +73,7 @@ Ray thin_lens_ray(const Vec3& eye, const Basis& uvw, Real d, const Vec2& uv, Rea
 // Exercise 18.1: the time of a ray in stratum k of n equal strata of the shutter interval
 // [open, close), at the place u in [0, 1) inside its stratum. Always below close (rounding
 // must not push it there), except for an instant shutter, open == close: then open.
+// Within rounding, and exactly only where every way is exact (strata of [0, 1) in quarters).
 Real shutter_time(int k, int n, Real u, Real open, Real close);
 
 // Where one camera ray starts in each of its dimensions. A pinhole camera ignores the lens

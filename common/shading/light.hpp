@@ -46,6 +46,8 @@ struct Light {
 // Exercise 15.2: the point of a parallelogram light at (u, v) in [0, 1)^2: the corner plus
 // u along one edge and v along the other. Which edge u takes is yours to choose (u along
 // edge_a or along edge_b): the light is the same either way, and the tests accept both.
+// Within a few units in the last place (8 epsilons of coordinates up to 8); exactly the
+// corner at (0, 0), which every way gives.
 Vec3 light_point(const Light& light, const Vec2& uv);
 
 }  // namespace rt

@@ -1,0 +1,23 @@
+// fairness 3.2 fail: the scaled interval test written for det > 0 only
+// T < t0 det || T > t1 det turns round when det < 0: a triangle seen from its back is then
+// hit only outside the interval.
+// @body
+    const Vec3& d = ray.direction;
+    const Vec3 ad = glm::abs(d);
+    const int kz = ad.x > ad.y ? (ad.x > ad.z ? 0 : 2) : (ad.y > ad.z ? 1 : 2);
+    int kx = (kz + 1) % 3, ky = (kx + 1) % 3;
+    if (d[kz] < 0) std::swap(kx, ky);
+    const Real Sx = d[kx] / d[kz], Sy = d[ky] / d[kz], Sz = Real(1) / d[kz];
+    const Vec3 a = A - ray.origin, b = B - ray.origin, c = C - ray.origin;
+    const Real ax = a[kx] - Sx * a[kz], ay = a[ky] - Sy * a[kz];
+    const Real bx = b[kx] - Sx * b[kz], by = b[ky] - Sy * b[kz];
+    const Real cx = c[kx] - Sx * c[kz], cy = c[ky] - Sy * c[kz];
+    const Real U = cx * by - cy * bx, V = ax * cy - ay * cx, W = bx * ay - by * ax;
+    if ((U < 0 || V < 0 || W < 0) && (U > 0 || V > 0 || W > 0)) return false;
+    const Real det = U + V + W;
+    if (det == 0) return false;
+    const Real T = U * (Sz * a[kz]) + V * (Sz * b[kz]) + W * (Sz * c[kz]);
+    if (T < interval.min * det || T > interval.max * det) return false;
+    const Real inv = Real(1) / det;
+    result = TriangleHit{T * inv, V * inv, W * inv};
+    return true;
