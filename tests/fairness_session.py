@@ -42,6 +42,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from checks import check, finish  # noqa: E402  (the tally the test scripts share)
+from exercise_text import put, region  # noqa: E402  (a region of an exercise file, replaced)
 
 HEADER = re.compile(r"^// fairness (\d+)\.(\d+) (pass|fail): (.+)$")
 
@@ -83,19 +84,6 @@ class Variant:
         if section != "body":
             raise SystemExit(f"{path}: no '// @body' line")
         self.body = "\n".join(body).rstrip("\n") + "\n"
-
-
-def region(text, opener):
-    """The span of the body between the line matching `opener` and its // @end."""
-    m = re.search(r"(^[ \t]*" + opener + r"[^\n]*\n)(.*?)(^[ \t]*// @end[ \t]*$)", text, re.S | re.M)
-    if not m:
-        raise SystemExit(f"no region '{opener}'")
-    return m.start(2), m.end(2)
-
-
-def put(text, opener, body):
-    a, b = region(text, opener)
-    return text[:a] + body + text[b:]
 
 
 def exercise_file(root, work, chapter, variants=()):
