@@ -100,8 +100,9 @@ read -r q2 u2 _ _ <<<"$(score 02 "$out")"
 check "fixing 2.2 raises ch02 from $p2 to $q2 of $u2" test "$q2" -gt "$p2"
 
 # A hint names the ./lab grade form with every chapter the student needs (defect 6 of
-# issue 28): chapter 05's tests stop at 2.3, which is neither written nor solved.
-hint=$( (build/exercises/bin/test_ch05 --no-colors 2>&1 || true) | grep -o 'take chapter [0-9]* from solutions/ with [^)]*' | head -1)
+# issue 28): some of chapter 05's tests stop at 2.3, which is neither written nor solved
+# (others at 4.1, whose hint names chapter 04 the same way).
+hint=$( (build/exercises/bin/test_ch05 --no-colors 2>&1 || true) | grep -o 'take chapter [0-9]* from solutions/ with [^)]*' | sort -u)
 check "a stopped test says how to go on: '$hint'" grep -qx 'take chapter 02 from solutions/ with ./lab grade --solved "01;02"' <<<"$hint"
 
 # --solved is kept in one spelling, refused in one line when malformed, and a chapter taken
