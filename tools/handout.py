@@ -107,8 +107,9 @@ def main(argv):
     args = parser.parse_args(argv)
     released = chapters_arg(args.chapters, released_all)
     out = args.dir.resolve()
-    if out == ROOT or ROOT in out.parents:
-        raise SystemExit("handout: make it outside the lab (it becomes the students' repository)")
+    # Anywhere but among the lab's own files (its build/ is scratch the lab's git ignores).
+    if (out == ROOT or ROOT in out.parents) and (ROOT / "build") not in out.parents:
+        raise SystemExit("handout: make it outside the lab or under its build/ (it becomes the students' repository)")
     if out.exists() and any(p.name != ".git" for p in out.iterdir()) and not (out / "tools" / "blanks").is_dir():
         raise SystemExit(f"handout: {out} holds files that are not an earlier handout: give an empty folder")
 
