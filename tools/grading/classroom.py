@@ -407,7 +407,8 @@ class Grader:
             budget_seconds, took = self.calibrate(len(students))
             calibrated = time.monotonic() - calibrated
             print(f"grade-class: the reference, graded first as a student: full marks, its programs ran {took:.1f} s; "
-                  f"each student's may run {budget_seconds:.0f} s in all ({BUDGET_FACTOR} × that, at least {MIN_BUDGET} s)",
+                  f"each student's may run {budget_seconds:.0f} s in all "
+                  f"({BUDGET_FACTOR} × the reference's, at least {MIN_BUDGET} s)",
                   flush=True)
             started = time.monotonic()
             with ThreadPoolExecutor(max_workers=self.args.jobs) as pool:
