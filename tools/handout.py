@@ -105,7 +105,7 @@ def main(argv):
     parser.add_argument("dir", type=Path)
     parser.add_argument("--chapters", default=" ".join(released_all))
     args = parser.parse_args(argv)
-    released = chapters_arg(args.chapters, released_all)
+    released = chapters_arg(args.chapters, released_all, "handout")
     out = args.dir.resolve()
     # Anywhere but among the lab's own files (its build/ is scratch the lab's git ignores).
     if (out == ROOT or ROOT in out.parents) and (ROOT / "build") not in out.parents:

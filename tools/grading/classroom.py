@@ -42,18 +42,18 @@ FIRST_UID = 61000  # each student's processes run as FIRST_UID + their slot
 BUDGET_FACTOR, MIN_BUDGET = 3, 60
 
 
-def chapters_arg(text, released):
-    """'01-08', '02;05', '3,4' -> ['01', ...] within the released chapters."""
+def chapters_arg(text, released, prog="grade-class"):
+    """'01-08', '02;05', '3,4' -> ['01', ...] within the released chapters; a refusal names `prog`."""
     out = []
     for part in re.split(r"[;, ]+", text.strip()):
         m = re.fullmatch(r"(\d{1,2})(?:-(\d{1,2}))?", part)
         if not m:
-            raise SystemExit(f"grade-class: --chapters '{text}': give chapters like 01-08 or 02,05")
+            raise SystemExit(f"{prog}: --chapters '{text}': give chapters like 01-08 or 02,05")
         first, last = int(m.group(1)), int(m.group(2) or m.group(1))
         for n in range(first, last + 1):
             ch = f"{n:02d}"
             if ch not in released:
-                raise SystemExit(f"grade-class: --chapters '{text}': {ch} is not a chapter "
+                raise SystemExit(f"{prog}: --chapters '{text}': {ch} is not a chapter "
                                  f"(chapters: {' '.join(released)})")
             if ch not in out:
                 out.append(ch)
