@@ -4,11 +4,14 @@
 #   CCACHE_BASEDIR: paths are hashed relative to the checkout, so another clone hits too.
 #   CCACHE_SLOPPINESS=time_macros: pcg_extras.hpp (included by every file that samples) puts
 #   __DATE__ __TIME__ into a seed the lab never uses; without it, ccache would miss on all
-#   those files.
+#   those files. pch_defines: the exercise files' precompiled headers (CMakeLists.txt) are
+#   cached, and so are the files compiled with them (ccache refuses both without it; no
+#   exercise file defines a macro before its headers, which is what it would miss).
+#   Absolute paths in a file's flags would make each copy of the lab miss: app/lab_paths.hpp.
 # A launcher given on the command line wins, except plain "ccache" (what an older lab put in
 # the cache, and a hand-made build may give): that one gets the two settings too.
 find_program(RTLAB_CCACHE_PROGRAM ccache)
 if(RTLAB_CCACHE_PROGRAM AND (NOT CMAKE_CXX_COMPILER_LAUNCHER OR CMAKE_CXX_COMPILER_LAUNCHER STREQUAL "ccache"))
-    set(CMAKE_CXX_COMPILER_LAUNCHER env CCACHE_BASEDIR=${PROJECT_SOURCE_DIR} CCACHE_SLOPPINESS=time_macros
+    set(CMAKE_CXX_COMPILER_LAUNCHER env CCACHE_BASEDIR=${PROJECT_SOURCE_DIR} CCACHE_SLOPPINESS=time_macros,pch_defines
         ${RTLAB_CCACHE_PROGRAM})
 endif()

@@ -6,6 +6,6 @@ using namespace rt;
 
 int main(int argc, char** argv) {
     ChapterApp app("ch05", "The ray tracing program");
-    app.add_scene_files(RTLAB_CHAPTER_DIR, {"spheres", "lambert", "meshes", "skipping"});
+    app.add_scene_files(chapter_dir(), {"spheres", "lambert", "meshes", "skipping"});
     return app.run(argc, argv);
 }

@@ -7,7 +7,7 @@ using namespace rt;
 
 int main(int argc, char** argv) {
     ChapterApp app("ch06", "Shadows");
-    app.add_scene_files(RTLAB_CHAPTER_DIR, {"shadows", "conic"});
+    app.add_scene_files(chapter_dir(), {"shadows", "conic"});
     app.add_scene("acne", "the acne stress scene at 10^5 units from the origin, robust offset",
                   [] { return acne_scene(Real(1e5), Offset{OffsetMethod::robust}); });
     return app.run(argc, argv);

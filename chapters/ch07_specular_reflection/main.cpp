@@ -5,6 +5,6 @@ using namespace rt;
 
 int main(int argc, char** argv) {
     ChapterApp app("ch07", "Specular reflection");
-    app.add_scene_files(RTLAB_CHAPTER_DIR, {"mirrors", "tinted-sphere"});
+    app.add_scene_files(chapter_dir(), {"mirrors", "tinted-sphere"});
     return app.run(argc, argv);
 }

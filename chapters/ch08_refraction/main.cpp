@@ -5,6 +5,6 @@ using namespace rt;
 
 int main(int argc, char** argv) {
     ChapterApp app("ch08", "Refraction");
-    app.add_scene_files(RTLAB_CHAPTER_DIR, {"glass-sphere", "glass-block", "tir"});
+    app.add_scene_files(chapter_dir(), {"glass-sphere", "glass-block", "tir"});
     return app.run(argc, argv);
 }

@@ -5,6 +5,6 @@ using namespace rt;
 
 int main(int argc, char** argv) {
     ChapterApp app("ch09", "Instancing");
-    app.add_scene_files(RTLAB_CHAPTER_DIR, {"ellipsoid", "instances"});
+    app.add_scene_files(chapter_dir(), {"ellipsoid", "instances"});
     return app.run(argc, argv);
 }

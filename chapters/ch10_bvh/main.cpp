@@ -6,6 +6,6 @@ using namespace rt;
 
 int main(int argc, char** argv) {
     ChapterApp app("ch10", "Bounding boxes and the bounding volume hierarchy");
-    app.add_scene_files(RTLAB_CHAPTER_DIR, {"spheres", "terrain", "soup", "cost"});
+    app.add_scene_files(chapter_dir(), {"spheres", "terrain", "soup", "cost"});
     return app.run(argc, argv);
 }

@@ -6,6 +6,6 @@ using namespace rt;
 
 int main(int argc, char** argv) {
     ChapterApp app("ch11", "The uniform grid");
-    app.add_scene_files(RTLAB_CHAPTER_DIR, {"atoms", "terrain", "stadium"});
+    app.add_scene_files(chapter_dir(), {"atoms", "terrain", "stadium"});
     return app.run(argc, argv);
 }

@@ -6,6 +6,6 @@ using namespace rt;
 
 int main(int argc, char** argv) {
     ChapterApp app("ch12", "The BSP tree");
-    app.add_scene_files(RTLAB_CHAPTER_DIR, {"city", "sticks", "stadium"});
+    app.add_scene_files(chapter_dir(), {"city", "sticks", "stadium"});
     return app.run(argc, argv);
 }

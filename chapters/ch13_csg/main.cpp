@@ -6,6 +6,6 @@ using namespace rt;
 
 int main(int argc, char** argv) {
     ChapterApp app("ch13", "Constructive solid geometry");
-    app.add_scene_files(RTLAB_CHAPTER_DIR, {"lens", "die", "nested", "meshes", "coplanar"});
+    app.add_scene_files(chapter_dir(), {"lens", "die", "nested", "meshes", "coplanar"});
     return app.run(argc, argv);
 }

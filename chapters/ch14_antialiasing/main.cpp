@@ -6,6 +6,6 @@ using namespace rt;
 
 int main(int argc, char** argv) {
     ChapterApp app("ch14", "Antialiasing");
-    app.add_scene_files(RTLAB_CHAPTER_DIR, {"checker", "edges"});
+    app.add_scene_files(chapter_dir(), {"checker", "edges"});
     return app.run(argc, argv);
 }

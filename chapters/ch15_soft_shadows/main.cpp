@@ -6,6 +6,6 @@ using namespace rt;
 
 int main(int argc, char** argv) {
     ChapterApp app("ch15", "Soft shadows");
-    app.add_scene_files(RTLAB_CHAPTER_DIR, {"penumbra", "fence"});
+    app.add_scene_files(chapter_dir(), {"penumbra", "fence"});
     return app.run(argc, argv);
 }

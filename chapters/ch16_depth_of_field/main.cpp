@@ -6,6 +6,6 @@ using namespace rt;
 
 int main(int argc, char** argv) {
     ChapterApp app("ch16", "Depth of field");
-    app.add_scene_files(RTLAB_CHAPTER_DIR, {"row", "lights"});
+    app.add_scene_files(chapter_dir(), {"row", "lights"});
     return app.run(argc, argv);
 }

@@ -6,6 +6,6 @@ using namespace rt;
 
 int main(int argc, char** argv) {
     ChapterApp app("ch17", "Glossy reflection");
-    app.add_scene_files(RTLAB_CHAPTER_DIR, {"plates", "grazing"});
+    app.add_scene_files(chapter_dir(), {"plates", "grazing"});
     return app.run(argc, argv);
 }

@@ -6,6 +6,6 @@ using namespace rt;
 
 int main(int argc, char** argv) {
     ChapterApp app("ch18", "Motion blur");
-    app.add_scene_files(RTLAB_CHAPTER_DIR, {"balls", "shutter"});
+    app.add_scene_files(chapter_dir(), {"balls", "shutter"});
     return app.run(argc, argv);
 }

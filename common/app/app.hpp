@@ -1,6 +1,7 @@
 #pragma once
 // The command line every chapter executable shares. A chapter's main() registers its scenes
 // and calls run(); everything else (options, rendering, output, picking, stats) is here.
+#include "app/lab_paths.hpp"  // chapter_dir(), for a chapter's add_scene_files
 #include "io/scene_file.hpp"
 #include "render/render.hpp"
 #include "render/scene.hpp"

@@ -2,6 +2,7 @@
 
 #include "app/explore_gate.hpp"
 #include "app/explore_session.hpp"
+#include "app/lab_paths.hpp"
 #include "core/text.hpp"
 
 #include <httplib.h>
@@ -137,11 +138,11 @@ int explore(const ChapterApp& app, const ChapterApp::Invocation& inv) {
     server.set_read_timeout(5);
     server.set_payload_max_length(std::size_t(limits::scene_file_bytes.max));
 
-    const std::string page = RTLAB_EXPLORE_DIR;
+    const std::string page = explore_page_dir();
     const std::vector<StaticFile> files{{"/", page + "/index.html", "text/html; charset=utf-8"},
                                         {"/explore.js", page + "/explore.js", "text/javascript"},
                                         {"/explore.css", page + "/explore.css", "text/css"},
-                                        {"/three.min.js", RTLAB_THREE_JS, "text/javascript"},
+                                        {"/three.min.js", three_js_path(), "text/javascript"},
                                         {"/favicon.ico", "", ""}};
     for (const StaticFile& f : files)
         server.Get(f.url, [f](const httplib::Request&, httplib::Response& res) {

@@ -1,5 +1,6 @@
 #include "app/explore_session.hpp"
 
+#include "app/lab_paths.hpp"
 #include "app/pick_json.hpp"
 #include "app/ray_tree_svg.hpp"
 #include "core/build_info.hpp"
@@ -60,7 +61,7 @@ json names_json(const Names& names) {
 
 ExploreSession::ExploreSession(const ChapterApp& app, const ChapterApp::Invocation& inv) : app_(app) {
     std::vector<std::string> folders = app.scene_folders();
-    folders.push_back(RTLAB_SHARED_ASSETS);
+    folders.push_back(shared_assets_dir());
     folders.insert(folders.end(), inv.allow.begin(), inv.allow.end());
     page_files_ = FileAccess(folders, "--allow DIR on the explorer's command line adds a folder");
     invocation_ = render_invocation_ = inv;
