@@ -25,7 +25,7 @@ mkdir -p "$work"
 git clone -q "$root" "$work/lab"
 cd "$work/lab"
 export CCACHE_DIR="$work/ccache"  # empty: a first run compiles everything (when ccache is installed)
-rows=()
+rows=() phases=()
 timed() {  # timed LABEL TARGET COMMAND...
     local label=$1 target=$2 start end
     shift 2
@@ -69,7 +69,10 @@ if ((with_test)); then
         rm -rf "$work/test" && git clone -q "$root" "$work/test" && cd "$work/test"
         [[ $cache == empty ]] && rm -rf "$CCACHE_DIR"
         timed "./lab test, fresh clone, $cache compiler cache" "$([[ $cache == empty ]] && echo "<= 25 min" || echo "<= 12 min")" ./lab test
+        # Where the time went: ./lab test stamps each phase with the time since it began.
+        phases+=("$(sed -nE "s/^== (.*)  \(([0-9]+)m([0-9]+)s\)$/phase $cache \2 \3 \1/p" "$work/last.log")")
     done
 fi
 echo
 printf '%s\n' "${rows[@]}"
+if ((${#phases[@]})); then printf '%s\n' "${phases[@]}"; fi

@@ -18,15 +18,40 @@ def code_span(label):
     return f"`{m.group(1)}`{m.group(2)}"
 
 
+def phase_table(starts, rows):
+    """Where `./lab test`'s time went, phase by phase: each phase lasts until the next begins,
+    the last until the whole run ends."""
+    if not starts:
+        return []
+    caches = list(starts)
+    durations = {}
+    for cache in caches:
+        total = next((s for label, (s, _) in rows.items() if label.startswith("./lab test") and cache in label), None)
+        phases = starts[cache]
+        for i, (name, begun) in enumerate(phases):
+            end = phases[i + 1][1] if i + 1 < len(phases) else total
+            durations.setdefault(name, {})[cache] = None if end is None else end - begun
+    out = ["", f"`./lab test`, phase by phase ({' and '.join(c + ' compiler cache' for c in caches)}):", "",
+           "| phase | " + " | ".join(caches) + " |", "|---|" + "---:|" * len(caches)]
+    for name, by in durations.items():
+        cells = ["" if by.get(c) is None else f"{by[c] // 60:.0f}m{by[c] % 60:02.0f}s" for c in caches]
+        out.append(f"| {name} | " + " | ".join(cells) + " |")
+    return out
+
+
 def main():
     if len(sys.argv) != 3:
         sys.exit("usage: fast_loop_table.py OUTPUT OUT.md")
-    machine, rows = None, {}
+    machine, rows, starts = None, {}, {}
     with open(sys.argv[1]) as f:
         for line in f:
             m = re.match(r"^fast loop, (\d+) cores, (.*), in \S+\s*$", line)
             if m:
                 machine = f"{m.group(2)}, {m.group(1)} cores"
+                continue
+            m = re.match(r"^phase (\S+) (\d+) (\d+) (.*?)\s*$", line)  # a phase of ./lab test began
+            if m:
+                starts.setdefault(m.group(1), []).append((m.group(4), int(m.group(2)) * 60 + int(m.group(3))))
                 continue
             m = re.match(r"^(\./lab .*?)\s+([\d.]+) s   (.*?)\s*$", line)
             if m:
@@ -40,6 +65,7 @@ def main():
         shown = f"{seconds:,.1f} s" + (f" ({seconds / 60:.1f} min)" if seconds >= 600 else "")
         target = "" if target == "-" else target.replace("<=", "≤")
         out.append(f"| {what} | {shown} | {target} |")
+    out += phase_table(starts, rows)
     with open(sys.argv[2], "w") as f:
         f.write("\n".join(out) + "\n")
     print("\n".join(out))

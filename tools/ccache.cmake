@@ -8,10 +8,14 @@
 #   cached, and so are the files compiled with them (ccache refuses both without it; no
 #   exercise file defines a macro before its headers, which is what it would miss).
 #   Absolute paths in a file's flags would make each copy of the lab miss: app/lab_paths.hpp.
+#   CCACHE_NOHASHDIR=true: with debug information (the sanitizer presets' -g1) ccache would key
+#   each object on the folder it is compiled in, so every clone compiled the asan and tsan
+#   builds again; the price is that an object's line tables may name the folder of the copy
+#   that compiled it first (the file names and lines a sanitizer prints are the same).
 # A launcher given on the command line wins, except plain "ccache" (what an older lab put in
-# the cache, and a hand-made build may give): that one gets the two settings too.
+# the cache, and a hand-made build may give): that one gets these settings too.
 find_program(RTLAB_CCACHE_PROGRAM ccache)
 if(RTLAB_CCACHE_PROGRAM AND (NOT CMAKE_CXX_COMPILER_LAUNCHER OR CMAKE_CXX_COMPILER_LAUNCHER STREQUAL "ccache"))
     set(CMAKE_CXX_COMPILER_LAUNCHER env CCACHE_BASEDIR=${PROJECT_SOURCE_DIR} CCACHE_SLOPPINESS=time_macros,pch_defines
-        ${RTLAB_CCACHE_PROGRAM})
+        CCACHE_NOHASHDIR=true ${RTLAB_CCACHE_PROGRAM})
 endif()
