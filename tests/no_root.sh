@@ -41,7 +41,7 @@ user_env=(env -i HOME="$scratch/home" LANG=C.UTF-8 PATH="$scratch/bin:/usr/local
 if ((EUID == 0)) && command -v ccache >/dev/null && cache=$(ccache -k cache_dir 2>/dev/null) && [[ -d $cache ]]; then
     cp -al "$cache" "$scratch/ccache" 2>/dev/null || cp -a "$cache" "$scratch/ccache"
     chmod -R a+rX "$scratch/ccache"
-    user_env+=(CCACHE_DIR="$scratch/ccache" CCACHE_READONLY=1)
+    user_env+=(CCACHE_DIR="$scratch/ccache" CCACHE_READONLY=1 CCACHE_TEMPDIR="$scratch/home/ccache-tmp")
 fi
 failures=0
 fail() { echo "no_root: FAILED: $*" >&2; failures=$((failures + 1)); }
