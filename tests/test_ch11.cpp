@@ -208,7 +208,7 @@ TEST_CASE(
     CHECK(rt::test::disagreements(walls.list, set.rays, set.intervals, kGrid) == 0);
 }
 
-TEST_CASE("11.2 the grid returns brute force's hit on 10^5 random rays (t, surface and triangle)") {
+TEST_CASE("11.2 the grid returns brute force's hit on random rays (t, surface and triangle)") {
     const SurfaceList list = rt::test::mixed_scene();
     const rt::test::RaySet set = rt::test::random_rays(rt::test::kRandomRays);
     CHECK(rt::test::disagreements(list, set.rays, set.intervals, kGrid) == 0);

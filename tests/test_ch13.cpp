@@ -569,8 +569,8 @@ TEST_CASE("far from the origin, out to the coordinate limit: the same image with
     // hit, until their boxes grew by that rounding, core/hit_rounding.hpp's grown_by_rounding).
     const auto scene_at = [](const Vec3& o, double size, const Vec3& eye) {
         const auto at = [&](double x, double y, double z) {
-            return "[" + std::to_string(double(o.x) + x * size) + ", " + std::to_string(double(o.y) + y * size) + ", " +
-                   std::to_string(double(o.z) + z * size) + "]";
+            return std::string("[") + std::to_string(double(o.x) + x * size) + ", " +
+                   std::to_string(double(o.y) + y * size) + ", " + std::to_string(double(o.z) + z * size) + "]";
         };
         const std::string ball = R"(, {"type": "sphere", "material": "m", "radius": )" + std::to_string(size) + ", ";
         return R"({"camera": {"eye": )" + at(eye.x, eye.y, eye.z) + R"(, "target": )" + at(0, 0, 0) +

@@ -17,19 +17,22 @@
 
 namespace rt::test {
 
-// How many random rays a structure is checked on: 10^5, as the structures promise; under
-// the sanitizers (10x slower, and looking for memory errors, not disagreements) 2 * 10^4.
+// The sanitizer builds look for memory errors, not disagreements: they take the same paths
+// on fewer rays (each ray costs ten times as much there).
 #if defined(__SANITIZE_ADDRESS__) || defined(__SANITIZE_THREAD__)
-inline constexpr int kRandomRays = 20000;
+inline constexpr bool kSanitized = true;
 #elif defined(__has_feature)
-#if __has_feature(address_sanitizer) || __has_feature(thread_sanitizer)
-inline constexpr int kRandomRays = 20000;
+inline constexpr bool kSanitized = __has_feature(address_sanitizer) || __has_feature(thread_sanitizer);
 #else
-inline constexpr int kRandomRays = 100000;
+inline constexpr bool kSanitized = false;
 #endif
-#else
-inline constexpr int kRandomRays = 100000;
-#endif
+
+// How many random rays a structure is checked on against brute force. Brute force's answers
+// are most of such a test's time, and the test programs of chapters 10-12 and 18 run in every
+// grade (a class's, the fairness session's rounds): 3 * 10^4 rays still pass through every
+// kind of node and leaf tens of thousands of times, and the rays that find rounding errors
+// are the aimed ones (edge_rays, hit_box's axis-parallel rays), which every build casts.
+inline constexpr int kRandomRays = kSanitized ? 5000 : 30000;
 
 struct Rng {
     pcg32 gen{2024};
@@ -82,10 +85,13 @@ inline RaySet random_rays(int n) {
 // Rays through every vertex and edge midpoint of a closed mesh around `centre`: in `all`,
 // from anywhere (grazing rays included: they make ties); in `crossing`, from outside roughly
 // along the normal, so that each crosses the surface there and must hit.
+// Under the sanitizers, only every fourth triangle's.
 inline void edge_rays(const MeshData& data, const Vec3& centre, RaySet& all, RaySet& crossing) {
     Rng rng;
-    for (const auto& t : data.triangles)
+    const std::size_t stride = kSanitized ? 4 : 1;
+    for (std::size_t k = 0; k < data.triangles.size(); k += stride)
         for (int e = 0; e < 3; ++e) {
+            const auto& t = data.triangles[k];
             const Vec3 a = data.positions[t[e]], b = data.positions[t[(e + 1) % 3]];
             for (const Vec3& p : {a, (a + b) * Real(0.5)}) {
                 const Vec3 o = rng.vec(-9, 9) * Real(1.5);
