@@ -1,7 +1,8 @@
 # The layering of common/ is enforced by the compiler: in each layer's view (build/layers/L)
 # only the layers L sees exist. For every layer, include a header of each other layer: one it
 # does not see must fail ("No such file|file not found"), one it sees must compile (the view
-# works; the build already compiles every header inside its own layer).
+# works; the build already compiles every header inside its own layer). Preprocessing is
+# enough for both: it finds every file a header includes, or names the one it cannot.
 #   cmake -DCXX=... -DVIEWS=build/layers -DSOURCE=common "-DLAYERS=core=core;geometry=geometry,core;..."
 #         -DWORK=dir -P layers_test.cmake
 cmake_policy(SET CMP0057 NEW)  # if(IN_LIST) in script mode
@@ -21,9 +22,9 @@ foreach(entry IN LISTS LAYERS)
         file(GLOB headers RELATIVE ${SOURCE} ${SOURCE}/${other}/*.hpp)
         list(GET headers 0 header)
         file(WRITE ${WORK}/${layer}_sees_${other}.cpp "#include \"${header}\"\n")
-        execute_process(COMMAND ${CXX} -std=c++20 -fsyntax-only -I${VIEWS}/${layer} ${INCLUDES}
+        execute_process(COMMAND ${CXX} -std=c++20 -E -I${VIEWS}/${layer} ${INCLUDES}
                                 ${WORK}/${layer}_sees_${other}.cpp
-                        RESULT_VARIABLE code ERROR_VARIABLE err)
+                        RESULT_VARIABLE code OUTPUT_QUIET ERROR_VARIABLE err)
         math(EXPR checks "${checks} + 1")
         if(NOT other IN_LIST sees)
             if(code EQUAL 0 OR NOT err MATCHES "No such file|file not found")
