@@ -19,3 +19,6 @@ if(RTLAB_CCACHE_PROGRAM AND (NOT CMAKE_CXX_COMPILER_LAUNCHER OR CMAKE_CXX_COMPIL
     set(CMAKE_CXX_COMPILER_LAUNCHER env CCACHE_BASEDIR=${PROJECT_SOURCE_DIR} CCACHE_SLOPPINESS=time_macros,pch_defines
         CCACHE_NOHASHDIR=true ${RTLAB_CCACHE_PROGRAM})
 endif()
+# Compiles outside the build's own rules (tools/handout.py's reference objects) take the same
+# launcher from CMakeCache.txt.
+set(RTLAB_CXX_LAUNCHER "${CMAKE_CXX_COMPILER_LAUNCHER}" CACHE INTERNAL "the compiler launcher, for compiles outside the build's rules")

@@ -77,7 +77,8 @@ def reference_objects(build, out):
             cut = [a for i, a in enumerate(argv) if a != "-o" and (i == 0 or argv[i - 1] != "-o")]
             cut[0] = compiler
             obj = folder / f"ch{ch}.o"
-            run([*cut, *extra, "-g0", f"-ffile-prefix-map={ROOT}=.", "-o", obj], cwd=commands[ch]["directory"])
+            run([*build.launcher(), *cut, *extra, "-g0", f"-ffile-prefix-map={ROOT}=.", "-o", obj],
+                cwd=commands[ch]["directory"])
             # No debug section, no local symbol, no compiler note: the globals the linker needs.
             run([strip, "--strip-unneeded", "--remove-section=.comment", obj])
     version = run(["c++", "-dumpfullversion"]).strip()

@@ -32,6 +32,14 @@ class ClassBuild:
                      "-DRTLAB_STAND_IN=", "-DCMAKE_EXPORT_COMPILE_COMMANDS=ON"]
         subprocess.run(configure, check=True, capture_output=True)
 
+    def launcher(self):
+        """The compiler launcher of this build (tools/ccache.cmake: ccache, or nothing), as argv."""
+        for line in (self.dir / "CMakeCache.txt").read_text().splitlines():
+            if line.startswith("RTLAB_CXX_LAUNCHER:INTERNAL="):
+                value = line.split("=", 1)[1]
+                return value.split(";") if value else []
+        return []
+
     def make(self):
         """Configures and builds (ninja does only what changed); then reads the commands."""
         self.configure()
