@@ -1,10 +1,12 @@
-"""Book §B.6's table from bench/fast_loop.sh's output (./lab bench fast-loop).
+"""Book §B.6's and §B.1's tables from bench/fast_loop.sh's output (./lab bench fast-loop).
 
-    python3 bench/fast_loop_table.py OUTPUT OUT.md
+    python3 bench/fast_loop_table.py OUTPUT LOOP.md [TEST.md]
 
 Each row of fast_loop.sh's table ("LABEL  SECONDS s  TARGET") becomes a row of a Markdown
-table, with the machine the loop ran on. The times are what one run on a shared machine
-measured: a row far from its target is worth running again before it is believed.
+table, with the machine the loop ran on: the student's loop in LOOP.md (§B.6), `./lab test`'s
+rows and its phases in TEST.md (§B.1, what CI runs; when the loop ran it). The times are what
+one run on a shared machine measured: a row far from its target is worth running again before
+it is believed.
 """
 
 import datetime
@@ -40,8 +42,8 @@ def phase_table(starts, rows):
 
 
 def main():
-    if len(sys.argv) != 3:
-        sys.exit("usage: fast_loop_table.py OUTPUT OUT.md")
+    if len(sys.argv) not in (3, 4):
+        sys.exit("usage: fast_loop_table.py OUTPUT LOOP.md [TEST.md]")
     machine, rows, starts = None, {}, {}
     with open(sys.argv[1]) as f:
         for line in f:
@@ -58,17 +60,25 @@ def main():
                 rows.setdefault(m.group(1), (float(m.group(2)), m.group(3)))
     if machine is None or not rows:
         sys.exit(f"fast_loop_table.py: {sys.argv[1]} is not bench/fast_loop.sh's output")
-    out = [f"_Measured by `./lab bench fast-loop` (`bench/fast_loop.sh`) on {datetime.date.today().isoformat()}, "
-           f"{machine}, one run._", "", "| what | time | target |", "|---|---:|---|"]
-    for label, (seconds, target) in rows.items():
-        what = code_span(label)
-        shown = f"{seconds:,.1f} s" + (f" ({seconds / 60:.1f} min)" if seconds >= 600 else "")
-        target = "" if target == "-" else target.replace("<=", "≤")
-        out.append(f"| {what} | {shown} | {target} |")
-    out += phase_table(starts, rows)
-    with open(sys.argv[2], "w") as f:
-        f.write("\n".join(out) + "\n")
-    print("\n".join(out))
+    heading = (f"_Measured by `./lab bench fast-loop` (`bench/fast_loop.sh`) on {datetime.date.today().isoformat()}, "
+               f"{machine}, one run._")
 
+    def table(labels):
+        out = [heading, "", "| what | time | target |", "|---|---:|---|"]
+        for label in labels:
+            seconds, target = rows[label]
+            shown = f"{seconds:,.1f} s" + (f" ({seconds / 60:.1f} min)" if seconds >= 600 else "")
+            target = "" if target == "-" else target.replace("<=", "≤")
+            out.append(f"| {code_span(label)} | {shown} | {target} |")
+        return out
+
+    tests = [label for label in rows if label.startswith("./lab test")]
+    files = {sys.argv[2]: table([label for label in rows if label not in tests])}
+    if tests and len(sys.argv) == 4:
+        files[sys.argv[3]] = table(tests) + phase_table(starts, rows)
+    for path, out in files.items():
+        with open(path, "w") as f:
+            f.write("\n".join(out) + "\n")
+        print("\n".join(out))
 
 main()

@@ -17,6 +17,11 @@ balance, a binary file, a renamed file). Then:
   no process of a student's user id is left;
 - names reach the report as text and the CSV without a formula;
 - Gradescope's layout (tools/gradescope/) runs once and writes a results.json that agrees.
+The sandbox needs root (a user id and a scratch mount per student). Run by an ordinary user (./lab
+test in the container, or in ./lab distro-check), grade-class must refuse without --no-sandbox,
+and the class is graded without one: the honest students and the attacks on the unpacking (which
+are refused before anything runs), not the cheats, whose code would do what it tries. CI runs as
+root and grades them all.
 """
 import csv
 import gzip
@@ -35,6 +40,8 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 from checks import check, finish  # noqa: E402
 from exercise_text import exercise_text as exercise_text_of  # noqa: E402
+
+SANDBOX = os.geteuid() == 0  # the docstring's last paragraph
 
 root, work = Path(sys.argv[1]).resolve(), Path(sys.argv[2]).resolve()
 shutil.rmtree(work, ignore_errors=True)
@@ -76,7 +83,7 @@ folder(MARKUP, reference_files())
 
 # The cheats: each body of tests/adversarial/ as 2.2.
 cheats = []
-for path in sorted((root / "tests" / "adversarial").glob("*.cpp")):
+for path in sorted((root / "tests" / "adversarial").glob("*.cpp")) if SANDBOX else []:
     lines = path.read_text().replace("RTLAB_ROOT", json.dumps(str(root))).splitlines()
     helpers = "\n".join(lines[lines.index("// @helpers") + 1:lines.index("// @body")]) + "\n"
     body = "\n".join(lines[lines.index("// @body") + 1:]) + "\n"
@@ -124,8 +131,15 @@ def tree_hash(*folders):
 watched = [root / d for d in ("solutions", "tests", "tools", "common", "chapters")]
 before = tree_hash(*watched)
 out = work / "out"
+if not SANDBOX:
+    refused = subprocess.run([str(root / "tools" / "grade-class"), str(subs), "--out", str(out)], capture_output=True,
+                             text=True, timeout=600)
+    check(refused.returncode != 0 and "needs root" in refused.stderr and not out.exists(),
+          f"as an ordinary user, grade-class refuses to grade without its sandbox: {refused.stderr[-500:]}")
+    print("course: the cheats of tests/adversarial/ are graded only as root (their sandbox needs it)")
 run = subprocess.run([str(root / "tools" / "grade-class"), str(subs), "--out", str(out), "--chapters", "01-02",
-                      "--jobs", "2", "--seconds", "3"], capture_output=True, text=True, timeout=3600)
+                      "--jobs", "2", "--seconds", "3", *([] if SANDBOX else ["--no-sandbox"])], capture_output=True,
+                     text=True, timeout=3600)
 print(run.stdout[-3000:], run.stderr[-3000:])
 check(run.returncode == 0, f"grade-class ends well: {run.returncode}")
 check(tree_hash(*watched) == before, "the lab's tree is as it was")
@@ -134,8 +148,16 @@ for stray in ("/tmp/rtlab-adversarial-was-here", "/root/rtlab-adversarial-was-he
               str(subs.parent / "zip-slip-was-here.cpp")):
     check(not Path(stray).exists(), f"nothing written at {stray}")
 # (A zombie is dead already: it holds nothing, and waits only for init to read its status.)
-left = subprocess.run(["ps", "-eo", "uid=,pid=,stat=,comm="], capture_output=True, text=True).stdout.splitlines()
-left = [line for line in left if 61000 <= int(line.split()[0]) < 62000 and not line.split()[2].startswith("Z")]
+# Read from /proc as ps would (a minimal Debian has no ps): effective user id, state, name.
+left = []
+for status in Path("/proc").glob("[0-9]*/status"):
+    try:
+        fields = dict(line.split(":", 1) for line in status.read_text().splitlines() if ":" in line)
+    except OSError:
+        continue  # it ended meanwhile
+    uid, state = int(fields["Uid"].split()[1]), fields["State"].split()[0]
+    if 61000 <= uid < 62000 and state != "Z":
+        left.append(f"{uid} {status.parent.name} {state} {fields['Name'].strip()}")
 check(not left, f"no process of a student's user id is left: {left[:5]}")
 
 rows = {}
@@ -189,9 +211,12 @@ for name in cheats:
     check(all(m <= h for m, h in zip(mine, honest)), f"{name} scores {cells(name)}, more than an honest "
           f"unfinished 2.2 ({cells('honest-22')})")
     check(re.search(r"^  ch02", card(name), re.M), f"{name}: a reason names chapter 02:\n{card(name)}")
-for name, why in (("adv-interpose-read", "the C name 'read'"), ("adv-preinit", ".preinit_array"),
-                  ("adv-fork-sleepers", "ch02"), ("adv-fake-test-case", "a name of the test harness")):
-    check(why in card(name), f"{name}: the scorecard says '{why}':\n{card(name)}")
+named = {"adv-interpose-read": "the C name 'read'", "adv-preinit": ".preinit_array", "adv-fork-sleepers": "ch02",
+         "adv-fake-test-case": "a name of the test harness"}
+for name in cheats:
+    if name in named:
+        check(named[name] in card(name), f"{name}: the scorecard says '{named[name]}':\n{card(name)}")
+check(len(cheats) == 0 or set(named) <= set(cheats), f"the cheats named here are in tests/adversarial/: {sorted(named)}")
 
 # The unpacking.
 expect = {"zip-slip": ["01"], "link-out": ["01"], "tar-link": [], "bomb": [], "big-file": ["01"], "broken": [],
