@@ -62,29 +62,17 @@ void accumulate_to_rgb(const Image& pass, std::vector<double>& sum, int samples,
     }
 }
 
-bool frame_format(const std::string& name, FrameFormat& format) {
-    if (name == "rgb")
-        format = FrameFormat::rgb;
-    else if (name == "rgba")
-        format = FrameFormat::rgba;
-    else if (name == "png")
-        format = FrameFormat::png;
-    else if (name == "jpeg")
-        format = FrameFormat::jpeg;
-    else
-        return false;
-    return true;
-}
-
 const char* mime_type(FrameFormat format) {
     switch (format) {
         case FrameFormat::png:
             return "image/png";
         case FrameFormat::jpeg:
             return "image/jpeg";
-        default:
-            return "application/octet-stream";
+        case FrameFormat::rgb:
+        case FrameFormat::rgba:
+            break;
     }
+    return "application/octet-stream";
 }
 
 std::string encode_frame(const ExploreFrame& f, FrameFormat format) {

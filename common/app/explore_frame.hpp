@@ -1,6 +1,7 @@
 #pragma once
 // The explorer's frames: what a progressive pass leaves for the page, and the ways it can
 // travel (book §0, "The lab explorer": ./lab bench explore measures them).
+#include "core/names.hpp"
 #include "render/image.hpp"
 
 #include <cstdint>
@@ -31,10 +32,9 @@ void to_rgb(const Image& image, std::vector<std::uint8_t>& rgb);
 // passes summed so far: one sweep over the memory, not one to add and one to convert.
 void accumulate_to_rgb(const Image& pass, std::vector<double>& sum, int samples, std::vector<std::uint8_t>& rgb);
 
-enum class FrameFormat { rgb, rgba, png, jpeg };
-// "rgb" (the bytes as they are), "rgba" (alpha 255 added), "png" or "jpeg" (quality 90);
-// false for anything else.
-bool frame_format(const std::string& name, FrameFormat& format);
+// rgb: the bytes as they are; rgba: alpha 255 added; png; jpeg: quality 90.
+enum class FrameFormat : std::uint8_t { rgb, rgba, png, jpeg };
+inline constexpr auto kFrameFormatNames = names_of<FrameFormat>({"rgb", "rgba", "png", "jpeg"});
 const char* mime_type(FrameFormat format);
 std::string encode_frame(const ExploreFrame& frame, FrameFormat format);
 

@@ -13,6 +13,7 @@
 #include <chrono>
 #include <cstdio>
 #include <fstream>
+#include <optional>
 #include <semaphore>
 #include <sstream>
 
@@ -189,10 +190,10 @@ int explore(const ChapterApp& app, const ChapterApp::Invocation& inv) {
         const auto after = number_param(req, res, "after", std::numeric_limits<long long>::max(), 0);
         const auto wait = number_param(req, res, "wait", 10000, 1000);
         if (!after || !wait) return;
-        FrameFormat format = FrameFormat::rgba;
         const std::string name = req.has_param("format") ? req.get_param_value("format") : "rgba";
-        if (!frame_format(name, format))
-            return fail(res, 400, "parameter 'format' must be rgb, rgba, png or jpeg, not '" + name + "'");
+        const std::optional<FrameFormat> format = kFrameFormatNames.find(name);
+        if (!format)
+            return fail(res, 400, "parameter 'format' must be " + kFrameFormatNames.list() + ", not '" + name + "'");
         const auto frame = s.frame_after(std::uint64_t(*after), std::chrono::milliseconds(*wait));
         const std::string error = s.render_error();
         if (!error.empty()) res.set_header("X-Render-Error", error);
@@ -201,7 +202,7 @@ int explore(const ChapterApp& app, const ChapterApp::Invocation& inv) {
             return;
         }
         const auto start = Clock::now();
-        std::string bytes = encode_frame(*frame, format);
+        std::string bytes = encode_frame(*frame, *format);
         const double encode_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
         const auto header = [&](const char* key, auto v) { res.set_header(key, std::to_string(v)); };
         header("X-Frame-Id", frame->id);
@@ -218,7 +219,7 @@ int explore(const ChapterApp& app, const ChapterApp::Invocation& inv) {
         header("X-Nodes-Per-Ray", frame->nodes_per_ray);
         header("X-Primitives-Per-Ray", frame->primitives_per_ray);
         res.set_header("Cache-Control", "no-store");
-        res.set_content(std::move(bytes), mime_type(format));
+        res.set_content(std::move(bytes), mime_type(*format));
     });
 
     // POST /api/scene: a scene file's text; POST /api/camera: its "camera" object alone.

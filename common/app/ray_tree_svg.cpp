@@ -143,9 +143,10 @@ const char* kind_color(RayKind k) {
             return "#d97706";
         case RayKind::reflection:
             return "#2563eb";
-        default:
-            return "#059669";
+        case RayKind::refraction:
+            break;
     }
+    return "#059669";
 }
 
 }  // namespace

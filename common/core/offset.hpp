@@ -81,14 +81,13 @@ inline SpawnedRay spawn_ray(const SurfacePoint& from, const Vec3& direction, Rea
         case OffsetMethod::course:
             return {Ray{p, direction, time}, Interval{o.epsilon, max}};
         case OffsetMethod::robust:
-        default: {
-            const Vec3 q = offset_origin(p, n_side);
-            // Where the step already clears the bound, keep it: most hits, and every hit of
-            // a shape that reports no error (0), start exactly where exercise 6.1 puts them.
-            if (!(glm::dot(q - p, n_side) < from.error)) return {Ray{q, direction, time}, Interval{0, max}};
-            return {Ray{offset_origin(p + from.error * n_side, n_side), direction, time}, Interval{0, max}};
-        }
+            break;
     }
+    const Vec3 q = offset_origin(p, n_side);
+    // Where the step already clears the bound, keep it: most hits, and every hit of a shape
+    // that reports no error (0), start exactly where exercise 6.1 puts them.
+    if (!(glm::dot(q - p, n_side) < from.error)) return {Ray{q, direction, time}, Interval{0, max}};
+    return {Ray{offset_origin(p + from.error * n_side, n_side), direction, time}, Interval{0, max}};
 }
 
 }  // namespace rt

@@ -109,9 +109,10 @@ Strata strata_of(const Antialiasing& aa) {
             return Strata::centres;
         case PixelPattern::jittered:
             return Strata::jittered;
-        default:
-            return Strata::none;
+        case PixelPattern::random:
+            break;
     }
+    return Strata::none;
 }
 
 RenderResult render(const Scene& scene, const RenderOptions& o) {
