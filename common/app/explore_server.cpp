@@ -16,6 +16,7 @@
 #include <optional>
 #include <semaphore>
 #include <sstream>
+#include <utility>
 
 namespace rt {
 
@@ -37,15 +38,19 @@ constexpr const char* kDataPolicy = "default-src 'none'; frame-ancestors 'none';
 // httplib's pool queues every connection it accepts, without end. This one holds at most
 // `workers` at work and as many waiting: past that, the accepting thread waits for a place,
 // and new connections wait in the kernel's listen queue, costing the process nothing.
+// TaskQueue::enqueue returns nothing in Debian 12's cpp-httplib (0.11) and whether it took the
+// task in Debian 13's (0.18): this one always takes it.
+using Enqueued = decltype(std::declval<httplib::TaskQueue&>().enqueue(std::function<void()>()));
 class BoundedPool final : public httplib::TaskQueue {
 public:
     explicit BoundedPool(std::size_t workers) : places_(std::ptrdiff_t(2 * workers)), pool_(workers) {}
-    void enqueue(std::function<void()> fn) override {
+    Enqueued enqueue(std::function<void()> fn) override {
         places_.acquire();
         pool_.enqueue([this, fn = std::move(fn)] {
             fn();
             places_.release();
         });
+        return static_cast<Enqueued>(true);  // true, or nothing (a void expression) where enqueue is void
     }
     void shutdown() override { pool_.shutdown(); }
 
