@@ -4,6 +4,7 @@
 
 #include "core/flat_bvh.hpp"
 #include "core/hit_rounding.hpp"
+#include "core/traversal_count.hpp"
 
 #include <algorithm>
 #include <numeric>

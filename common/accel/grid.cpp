@@ -1,8 +1,8 @@
 #include "accel/grid.hpp"
 
-#include "core/flat_bvh.hpp"
 #include "core/hit_rounding.hpp"
 #include "core/limits.hpp"
+#include "core/traversal_count.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -11,6 +11,7 @@
 #include "core/flat_bvh.hpp"
 #include "core/float_round.hpp"
 #include "core/search_memory.hpp"
+#include "core/traversal_count.hpp"
 #include "core/wide_lanes.hpp"
 
 #include <bit>
@@ -278,9 +279,9 @@ inline void ask_for_postponed(const WideBvh<W>& bvh, const std::uint32_t* refs, 
 // each visit can be a trip to memory, it is on its way when its turn comes. A node with one
 // child entered pushes nothing: the search goes straight on (about half the visits of a
 // primary ray on the bunny).
-// - The closest hit (kAny false), as closest_hit() in core/flat_bvh.hpp: leaf narrows
-//   interval.max and returns true when it finds a closer hit, and a child whose entry lies
-//   beyond the best hit found since it was pushed is skipped.
+// - The closest hit (kAny false): leaf narrows interval.max and returns true when it finds a
+//   closer hit, and a child whose entry lies beyond the best hit found since it was pushed is
+//   skipped.
 // - Any hit (kAny true): the first leaf that returns true ends the search.
 // kAhead: interval.min >= 0, which lets enter() take its cheaper form.
 template <bool kAny, bool kAhead, unsigned kOctant, int W, class Leaf, class Fetch>

@@ -1,6 +1,6 @@
 #include "render/integrators.hpp"
 
-#include "core/flat_bvh.hpp"
+#include "core/traversal_count.hpp"
 #include "render/whitted.hpp"
 
 #include <algorithm>

@@ -1,6 +1,6 @@
 #include "render/render.hpp"
 
-#include "core/flat_bvh.hpp"
+#include "core/traversal_count.hpp"
 
 #include "core/limits.hpp"
 
