@@ -98,9 +98,10 @@ std::optional<Refusal> ExploreGate::check(const httplib::Request& req, bool page
                                     "): a page of another site may not drive it"};
     }
     if (!page_file && !token_.empty()) {
-        const char* problem = !req.has_header(kTokenHeader)                             ? "no token"
-                              : !same_token(req.get_header_value(kTokenHeader), token_) ? "wrong token"
-                                                                                        : nullptr;
+        // An empty header is no token: Debian 12's cpp-httplib (0.11) drops a header with no
+        // value, Debian 13's (0.18) keeps it; either way the page without its token says so.
+        const std::string sent = req.has_header(kTokenHeader) ? req.get_header_value(kTokenHeader) : "";
+        const char* problem = sent.empty() ? "no token" : !same_token(sent, token_) ? "wrong token" : nullptr;
         if (problem)
             return Refusal{403, std::string(problem) + ": open the address the explorer printed (" + origins_.front() +
                                     "/?token=...); its page sends the token with every request"};

@@ -199,6 +199,11 @@ def main(argv):
         report.append("--units")
     if args.expect:
         report += ["--expect", args.expect]
+    # exec discards what Python has not written yet: when the output is a pipe or a file, the
+    # warnings above would be lost (./lab distro-check found it: the student session's check
+    # of the --solved warning failed wherever PYTHONUNBUFFERED was not set).
+    sys.stdout.flush()
+    sys.stderr.flush()
     os.execv(sys.executable, report)
 
 
